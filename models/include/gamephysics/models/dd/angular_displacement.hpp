@@ -1,0 +1,26 @@
+#pragma once
+#include <cmath>
+#include <numbers>
+
+#include "gamephysics/models/registry.hpp"
+
+namespace gp::dd {
+
+/// DD:angDisp — angular displacement θ = ϕ(t) − ϕ(t₀), solved for the new orientation.
+/// (The SRS writes θ = dϕ/dt, which is a rate: srs/errata.md E-DD-ANGDISP.) The result is reduced
+/// to the SRS output range, taken half-open as 0 ≤ ϕ < 2π so that each orientation has one value.
+///   ϕ(t) = ϕ(t₀) + θ  (mod 2π)
+/// @param orientation           ϕ(t₀) [rad]
+/// @param angular_displacement  θ over [t₀, t] [rad]
+/// @return ϕ(t) in [0, 2π) [rad]
+inline double rotated_orientation(double orientation, double angular_displacement) {
+  constexpr double two_pi = 2.0 * std::numbers::pi;
+  double phi = std::fmod(orientation + angular_displacement, two_pi);
+  if (phi < 0.0) phi += two_pi;
+  // fmod of a tiny negative number plus 2π rounds to 2π itself, which is outside the range.
+  return phi >= two_pi ? 0.0 : phi;
+}
+
+GP_REGISTER_MODEL("DD:angDisp", dd, rotated_orientation);
+
+}  // namespace gp::dd

@@ -1,0 +1,18 @@
+#pragma once
+#include "gamephysics/models/registry.hpp"
+#include "gamephysics/models/types.hpp"
+
+namespace gp::dd {
+
+/// DD:linAcc — linear acceleration a = dv/dt, integrated over a step of length h.
+///   Δv = ∫ a dt = ā h
+/// @param mean_acceleration  ā, the mean acceleration over the step [m/s²]
+/// @param step               h [s]
+/// @return change of velocity Δv over the step [m/s]
+inline Vec2 velocity_change_from_acceleration(const Vec2& mean_acceleration, double step) {
+  return mean_acceleration * step;
+}
+
+GP_REGISTER_MODEL("DD:linAcc", dd, velocity_change_from_acceleration);
+
+}  // namespace gp::dd

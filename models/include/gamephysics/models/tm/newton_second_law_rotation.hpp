@@ -1,0 +1,19 @@
+#pragma once
+#include "gamephysics/models/registry.hpp"
+
+namespace gp::tm {
+
+/// TM:NewtonSecLawRotMot — Newton's second law for rotational motion, τ = I α, solved for α.
+/// In 2D (A:objectDimension) τ and α are the z-components of the SRS's vectors, and I is the
+/// scalar moment about the z-axis through the centre of mass.
+///   α = τ / I
+/// @param torque  net torque τ about the centre of mass [N·m]
+/// @param moment  moment of inertia I [kg·m²], I > 0
+/// @return angular acceleration α [rad/s²]
+inline double angular_acceleration_from_torque(double torque, double moment) {
+  return torque / moment;
+}
+
+GP_REGISTER_MODEL("TM:NewtonSecLawRotMot", tm, angular_acceleration_from_torque);
+
+}  // namespace gp::tm

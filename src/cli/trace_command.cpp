@@ -1,0 +1,24 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "verification/traceability/trace_report.hpp"
+
+namespace gp::cli {
+
+int trace(const std::filesystem::path& root, bool check_only) {
+  const auto inputs = verification::gather_trace_inputs(root);
+  const auto result = verification::analyse(inputs);
+  const auto files = verification::render_traceability(inputs, result);
+  const auto directory = root / "traceability";
+  for (const auto& problem : result.problems) std::cerr << "problem: " << problem << "\n";
+  if (check_only) {
+    const auto stale = verification::stale_traceability(files, directory);
+    for (const auto& name : stale) std::cerr << "stale: traceability/" << name << "\n";
+    return result.problems.empty() && stale.empty() ? 0 : 1;
+  }
+  verification::write_traceability(files, directory);
+  std::cout << "wrote " << files.size() << " files to " << directory.string() << "\n";
+  return result.problems.empty() ? 0 : 1;
+}
+
+}  // namespace gp::cli

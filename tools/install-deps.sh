@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages GamePhysics builds and tests with, only when some are missing,
+# so that ./run.sh and ./test.sh work on a fresh Debian machine run as root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake
+  libeigen3-dev        # every vector and matrix
+  libsundials-dev      # the oracle: CVODE and ARKODE
+  catch2               # unit tests (catch2/catch.hpp)
+  gcovr                # coverage summary in ./test.sh
+  nlohmann-json3-dev   # all JSON: catalogue, scenes
+  libcli11-dev         # the command line
+  libboost-dev         # Boost.Units for the dimensional audit
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y --no-install-recommends "${missing[@]}"
+fi

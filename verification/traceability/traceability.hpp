@@ -1,0 +1,53 @@
+#pragma once
+// Traceability between the SRS and the code: which function implements each SRS model, which tests
+// verify it, and how the edges the code uses differ from the edges the SRS declares.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gamephysics/models/registry.hpp"
+#include "verification/dimensions/dimensional_audit.hpp"
+#include "verification/srs/catalog.hpp"
+#include "verification/srs/errata.hpp"
+#include "verification/traceability/test_index.hpp"
+
+namespace gp::verification {
+
+/// Everything the traceability check reads.
+struct TraceInputs {
+  Catalog catalog;
+  std::vector<models::Registration> registrations;
+  std::map<std::string, std::vector<std::string>> calls;  ///< model id -> model ids its file calls
+  std::vector<TestCase> tests;
+  std::vector<Erratum> errata;
+  std::vector<DimensionalCheck> dimensions;
+};
+
+/// Reads srs/catalog.json, srs/errata.md, tests/ and the model registrations under `root`.
+TraceInputs gather_trace_inputs(const std::filesystem::path& root);
+
+enum class EdgeStatus { matched, srs_only, code_only };
+
+/// A model-to-model edge and where it is declared.
+struct EdgeRow {
+  Edge edge;
+  EdgeStatus status;
+  std::string erratum;  ///< id of the erratum that explains a difference; empty if none
+};
+
+struct TraceResult {
+  std::vector<EdgeRow> edges;         ///< union of SRS and code edges, sorted
+  std::vector<std::string> problems;  ///< every failed check, one line each; empty when all pass
+};
+
+/// Runs every traceability check: each model has one function and a test, registrations match
+/// the calls in the code, each edge difference and each failed dimensional check has an erratum,
+/// each erratum names existing items and tests.
+TraceResult analyse(const TraceInputs& inputs);
+
+/// Tests tagged with `id`, in index order.
+std::vector<const TestCase*> tests_of(const TraceInputs& inputs, const std::string& id);
+
+}  // namespace gp::verification
