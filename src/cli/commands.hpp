@@ -10,8 +10,9 @@ namespace gp::cli {
 /// dimensional checks, errata, edges, traceability/ up to date).
 int verify(const std::filesystem::path& root);
 
-/// `gamephysics trace`: writes traceability/ under `root`; with `check_only`, writes nothing and
-/// fails when the committed copy is stale or a traceability check fails.
-int trace(const std::filesystem::path& root, bool check_only);
+/// `gamephysics trace`: writes the traceability files into `out`; with `check_only`, writes
+/// nothing and fails when the copy in `out` is stale. Either way fails when a traceability check
+/// fails.
+int trace(const std::filesystem::path& root, const std::filesystem::path& out, bool check_only);
 
 }  // namespace gp::cli

@@ -16,9 +16,11 @@ int main(int argc, char** argv) {
   verify->add_option("--root", root, "Repository root")->check(CLI::ExistingDirectory);
 
   bool check_only = false;
+  std::string out;
   auto* trace = app.add_subcommand("trace", "Write traceability/ from the catalogue and the code");
   trace->add_option("--root", root, "Repository root")->check(CLI::ExistingDirectory);
-  trace->add_flag("--check", check_only, "Write nothing; fail if traceability/ is stale");
+  trace->add_option("--out", out, "Where to write (default: ROOT/traceability)");
+  trace->add_flag("--check", check_only, "Write nothing; fail if the files in --out are stale");
 
   try {
     app.parse(argc, argv);
@@ -27,7 +29,10 @@ int main(int argc, char** argv) {
   }
   try {
     if (*verify) return gp::cli::verify(root);
-    return gp::cli::trace(root, check_only);
+    return gp::cli::trace(
+        root,
+        out.empty() ? std::filesystem::path(root) / "traceability" : std::filesystem::path(out),
+        check_only);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

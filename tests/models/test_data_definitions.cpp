@@ -70,7 +70,7 @@ TEST_CASE("Linear velocity is the rate of displacement", "[DD:linVel]") {
   CHECK_THAT((rate - v).norm(), WithinAbs(0.0, 1e-12));
 }
 
-TEST_CASE("Orientation stays in [0, 2π) after any angular displacement", "[DD:angDisp]") {
+TEST_CASE("Orientation stays within 0 ≤ ϕ < 2π after any angular displacement", "[DD:angDisp]") {
   CHECK_THAT(gp::dd::rotated_orientation(1.5 * pi, pi), WithinAbs(0.5 * pi, 1e-15));
   CHECK_THAT(gp::dd::rotated_orientation(0.0, -0.1), WithinAbs(2 * pi - 0.1, 1e-15));
   CHECK(gp::dd::rotated_orientation(0.0, 2 * pi) == 0.0);
@@ -168,10 +168,12 @@ TEST_CASE("Potential energy: m g h, and energy is conserved in free fall",
   CHECK_THAT(gp::dd::potential_energy(56.2, g, {0.412, 44.2}), WithinRel(24368.4324, 1e-14));
   // Along the closed-form projectile, KE + PE is constant.
   const Vec2 x0{0.0, 44.2}, v0{2.51, 5.0};
-  const double e0 = gp::dd::kinetic_energy(56.2, v0, 0.0, 0.0) + gp::dd::potential_energy(56.2, g, x0);
+  const double e0 =
+      gp::dd::kinetic_energy(56.2, v0, 0.0, 0.0) + gp::dd::potential_energy(56.2, g, x0);
   for (double t : {0.5, 1.0, 2.0, 3.0}) {
     const Vec2 x = x0 + v0 * t + 0.5 * g * t * t, v = v0 + g * t;
-    const double e = gp::dd::kinetic_energy(56.2, v, 0.0, 0.0) + gp::dd::potential_energy(56.2, g, x);
+    const double e =
+        gp::dd::kinetic_energy(56.2, v, 0.0, 0.0) + gp::dd::potential_energy(56.2, g, x);
     CHECK_THAT(e, WithinRel(e0, 1e-12));
   }
 }

@@ -36,15 +36,16 @@ struct Body {
   double w;
   Vec2 r;
 };
-Vec2 contact_velocity(const Body& b) { return b.v + b.w * Vec2{-b.r.y(), b.r.x()}; }
+Vec2 contact_velocity(const Body& b) {
+  return b.v + b.w * Vec2{-b.r.y(), b.r.x()};
+}
 void apply(Body& b, const Vec2& impulse) {
   b.v += impulse / b.m;
   b.w += (b.r.x() * impulse.y() - b.r.y() * impulse.x()) / b.I;
 }
 }  // namespace
 
-TEST_CASE("Collision impulse of a 1D head-on collision matches the closed form",
-          "[GD:impulse]") {
+TEST_CASE("Collision impulse of a 1D head-on collision matches the closed form", "[GD:impulse]") {
   // 1D: j = (1 + C_R) m_A m_B / (m_A + m_B) · closing speed (Hibbeler, central impact).
   const double ma = 56.2, mb = 74.5, cr = 0.8, closing = 2.51;
   const double j = gp::gd::collision_impulse(cr, Vec2{-closing, 0.0}, Vec2{1.0, 0.0}, 1.0 / ma,
@@ -60,8 +61,8 @@ TEST_CASE("Collision impulse with rotation obeys restitution and conserves momen
   const Vec2 n{0.0, 1.0};
   const Vec2 vi = contact_velocity(a) - contact_velocity(b);
   REQUIRE(vi.dot(n) < 0.0);
-  const double j = gp::gd::collision_impulse(cr, vi, n, 1.0 / a.m, 1.0 / b.m, 1.0 / a.I,
-                                             1.0 / b.I, a.r, b.r);
+  const double j =
+      gp::gd::collision_impulse(cr, vi, n, 1.0 / a.m, 1.0 / b.m, 1.0 / a.I, 1.0 / b.I, a.r, b.r);
   const Vec2 momentum_before = a.m * a.v + b.m * b.v;
   apply(a, j * n);
   apply(b, -j * n);

@@ -9,8 +9,8 @@ namespace gp::verification {
 SrsAudit run_srs_audit(const std::filesystem::path& root) {
   SrsAudit audit{gather_trace_inputs(root), {}, {}};
   audit.result = analyse(audit.inputs);
-  audit.stale = stale_traceability(render_traceability(audit.inputs, audit.result),
-                                   root / "traceability");
+  audit.stale =
+      stale_traceability(render_traceability(audit.inputs, audit.result), root / "traceability");
   return audit;
 }
 
@@ -35,16 +35,15 @@ std::string format_srs_audit(const SrsAudit& audit) {
   const auto& in = audit.inputs;
   const auto& c = in.catalog;
   std::string text = "SRS audit: srs/catalog.json against models/, tests/ and srs/errata.md\n";
-  text += row("catalogue", std::to_string(c.all_ids().size()) + " items: " +
-                               std::to_string(c.goals.size()) + " goals, " +
-                               std::to_string(c.assumptions.size()) + " assumptions, " +
-                               count_kinds(c) + ", " +
-                               std::to_string(c.functional_requirements.size()) + " FR, " +
-                               std::to_string(c.nonfunctional_requirements.size()) + " NFR, " +
-                               std::to_string(c.likely_changes.size()) + " LC, " +
-                               std::to_string(c.unlikely_changes.size()) + " UC; " +
-                               std::to_string(c.input_constraints) + " input and " +
-                               std::to_string(c.output_constraints) + " output constraints");
+  text += row("catalogue",
+              std::to_string(c.all_ids().size()) + " items: " + std::to_string(c.goals.size()) +
+                  " goals, " + std::to_string(c.assumptions.size()) + " assumptions, " +
+                  count_kinds(c) + ", " + std::to_string(c.functional_requirements.size()) +
+                  " FR, " + std::to_string(c.nonfunctional_requirements.size()) + " NFR, " +
+                  std::to_string(c.likely_changes.size()) + " LC, " +
+                  std::to_string(c.unlikely_changes.size()) + " UC; " +
+                  std::to_string(c.input_constraints) + " input and " +
+                  std::to_string(c.output_constraints) + " output constraints");
   int tested = 0;
   for (const auto& m : c.models) tested += tests_of(in, m.id).empty() ? 0 : 1;
   text += row("functions", std::to_string(in.registrations.size()) + " registered for " +
@@ -62,11 +61,11 @@ std::string format_srs_audit(const SrsAudit& audit) {
       implemented_failed += d.consistent ? 0 : 1;
     }
   }
-  text += row("dimensional checks",
-              std::to_string(written - written_failed) + " passed, " +
-                  std::to_string(written_failed) + " failed as written (" + failed_ids + "); " +
-                  std::to_string(implemented - implemented_failed) + "/" +
-                  std::to_string(implemented) + " corrected forms pass");
+  text += row("dimensional checks", std::to_string(written - written_failed) + " passed, " +
+                                        std::to_string(written_failed) + " failed as written (" +
+                                        failed_ids + "); " +
+                                        std::to_string(implemented - implemented_failed) + "/" +
+                                        std::to_string(implemented) + " corrected forms pass");
   std::map<std::string, int> kinds;
   for (const auto& e : in.errata) ++kinds[e.kind];
   std::string kind_text;
@@ -87,8 +86,8 @@ std::string format_srs_audit(const SrsAudit& audit) {
                            std::to_string(missing + extra) + " differences explained by errata");
   std::string stale;
   for (const auto& s : audit.stale) stale += " " + s;
-  text += row("traceability/", audit.stale.empty() ? "up to date" : "stale:" + stale +
-                                                                         " (run gamephysics trace)");
+  text += row("traceability/",
+              audit.stale.empty() ? "up to date" : "stale:" + stale + " (run gamephysics trace)");
   text += row("result", audit.passed() ? "PASS" : "FAIL");
   for (const auto& p : audit.result.problems) text += "  problem: " + p + "\n";
   return text;

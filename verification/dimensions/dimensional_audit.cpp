@@ -81,8 +81,8 @@ using ImpulseNumeratorWritten = decltype(Velocity() * Length());
 using ImpulseAsWritten =
     Terms<Quotient<ImpulseNumeratorWritten, decltype(Inverse<Mass>() * Squared<Length>())>,
           Quotient<ImpulseNumeratorWritten, Quotient<Squared<Length>, Moment>>>;
-using ImpulseImplemented = Terms<Quotient<Velocity, Inverse<Mass>>,
-                                 Quotient<Velocity, Quotient<Squared<Length>, Moment>>>;
+using ImpulseImplemented =
+    Terms<Quotient<Velocity, Inverse<Mass>>, Quotient<Velocity, Quotient<Squared<Length>, Moment>>>;
 
 }  // namespace
 
@@ -95,15 +95,23 @@ std::vector<DimensionalCheck> dimensional_audit() {
       check<Force, Terms<Force>>("TM:NewtonThirdLawMot", written, "F1 = -F2",
                                  {{"F1", "N"}, {"F2", "N"}}),
       check<Force, Terms<decltype(GravitationalConstant() * Mass() * Mass() / Squared<Length>() *
-                                  Length())>>(
-          "TM:UniversalGravLaw", written, "F_g = G m1 m2 / |d|^2 * d_hat",
-          {{"F_g", "N"}, {"G", "m^3/(kg*s^2)"}, {"m1", "kg"}, {"m2", "kg"}, {"d", "m"},
-           {"d_hat", "m"}}),
+                                  Length())>>("TM:UniversalGravLaw", written,
+                                              "F_g = G m1 m2 / |d|^2 * d_hat",
+                                              {{"F_g", "N"},
+                                               {"G", "m^3/(kg*s^2)"},
+                                               {"m1", "kg"},
+                                               {"m2", "kg"},
+                                               {"d", "m"},
+                                               {"d_hat", "m"}}),
       check<Force, Terms<decltype(GravitationalConstant() * Mass() * Mass() / Squared<Length>() *
-                                  Dimensionless())>>(
-          "TM:UniversalGravLaw", implemented, "F_g = G m1 m2 / |d|^2 * d/|d|",
-          {{"F_g", "N"}, {"G", "m^3/(kg*s^2)"}, {"m1", "kg"}, {"m2", "kg"}, {"d", "m"},
-           {"d/|d|", "1"}}),
+                                  Dimensionless())>>("TM:UniversalGravLaw", implemented,
+                                                     "F_g = G m1 m2 / |d|^2 * d/|d|",
+                                                     {{"F_g", "N"},
+                                                      {"G", "m^3/(kg*s^2)"},
+                                                      {"m1", "kg"},
+                                                      {"m2", "kg"},
+                                                      {"d", "m"},
+                                                      {"d/|d|", "1"}}),
       check<Torque, Terms<decltype(Moment() * AngularAcceleration())>>(
           "TM:NewtonSecLawRotMot", written, "tau = I alpha",
           {{"tau", "N*m"}, {"I", "kg*m^2"}, {"alpha", "rad/s^2"}}),
@@ -118,13 +126,23 @@ std::vector<DimensionalCheck> dimensional_audit() {
       check<Impulse, ImpulseAsWritten>(
           "GD:impulse", written,
           "j = -(1 + C_R) v_i^AB . n / ((1/m_A + 1/m_B) |n|^2 + |u_AP * n|^2 / I_A + ...)",
-          {{"j", "N*s"}, {"C_R", "1"}, {"v_i^AB", "m/s"}, {"n", "m"}, {"m_A", "kg"},
-           {"|u_AP * n|", "m"}, {"I_A", "kg*m^2"}}),
+          {{"j", "N*s"},
+           {"C_R", "1"},
+           {"v_i^AB", "m/s"},
+           {"n", "m"},
+           {"m_A", "kg"},
+           {"|u_AP * n|", "m"},
+           {"I_A", "kg*m^2"}}),
       check<Impulse, ImpulseImplemented>(
           "GD:impulse", implemented,
           "j = -(1 + C_R) v_i^AB . n / ((1/m_A + 1/m_B) + (u_AP x n)^2 / I_A + ...), |n| = 1",
-          {{"j", "N*s"}, {"C_R", "1"}, {"v_i^AB", "m/s"}, {"n", "1"}, {"m_A", "kg"},
-           {"u_AP x n", "m"}, {"I_A", "kg*m^2"}}),
+          {{"j", "N*s"},
+           {"C_R", "1"},
+           {"v_i^AB", "m/s"},
+           {"n", "1"},
+           {"m_A", "kg"},
+           {"u_AP x n", "m"},
+           {"I_A", "kg*m^2"}}),
       check<Length, Terms<decltype(Mass() * Length() / Mass())>>(
           "DD:ctrOfMass", written, "p_CM = sum(m_j p_j) / m_T",
           {{"p_CM", "m"}, {"m_j", "kg"}, {"p_j", "m"}, {"m_T", "kg"}}),
@@ -141,19 +159,20 @@ std::vector<DimensionalCheck> dimensional_audit() {
       check<Angle, Terms<Angle>>("DD:angDisp", implemented, "theta = phi(t) - phi(t0)",
                                  {{"theta", "rad"}, {"phi", "rad"}}),
       check<AngularVelocity, Terms<Rate<Angle>>>(
-          "DD:angVel", written, "omega = dtheta/dt", {{"omega", "rad/s"}, {"theta", "rad"}, {"t", "s"}}),
+          "DD:angVel", written, "omega = dtheta/dt",
+          {{"omega", "rad/s"}, {"theta", "rad"}, {"t", "s"}}),
       check<AngularAcceleration, Terms<Rate<AngularVelocity>>>(
           "DD:angAccel", written, "alpha = domega/dt",
           {{"alpha", "rad/s^2"}, {"omega", "rad/s"}, {"t", "s"}}),
       check<Velocity, Terms<Velocity, decltype(AngularVelocity() * Length())>>(
           "DD:chaslesThm", written, "v_B = v_O + omega x u_OB",
           {{"v_B", "m/s"}, {"v_O", "m/s"}, {"omega", "rad/s"}, {"u_OB", "m"}}),
-      check<Torque, Terms<decltype(Length() * Force())>>(
-          "DD:torque", written, "tau = r x F", {{"tau", "N*m"}, {"r", "m"}, {"F", "N"}}),
+      check<Torque, Terms<decltype(Length() * Force())>>("DD:torque", written, "tau = r x F",
+                                                         {{"tau", "N*m"}, {"r", "m"}, {"F", "N"}}),
       check<Energy, Terms<decltype(Mass() * Squared<Velocity>())>>(
           "DD:kEnergy", written, "KE = m |v|^2 / 2", {{"KE", "J"}, {"m", "kg"}, {"v", "m/s"}}),
-      check<Energy,
-            Terms<decltype(Mass() * Squared<Velocity>()), decltype(Moment() * Squared<AngularVelocity>())>>(
+      check<Energy, Terms<decltype(Mass() * Squared<Velocity>()),
+                          decltype(Moment() * Squared<AngularVelocity>())>>(
           "DD:kEnergy", implemented, "KE = m |v|^2 / 2 + I omega^2 / 2",
           {{"KE", "J"}, {"m", "kg"}, {"v", "m/s"}, {"I", "kg*m^2"}, {"omega", "rad/s"}}),
       check<Dimensionless, Terms<decltype(Velocity() * Length() / (Velocity() * Length()))>>(
@@ -182,8 +201,7 @@ std::vector<DimensionalCheck> dimensional_audit() {
       check<Velocity, Terms<Velocity, decltype(Impulse() / Mass() * Dimensionless())>>(
           "IM:col2D", implemented, "v_A(t_c+) = v_A(t_c) + j / m_A * n, |n| = 1",
           {{"v_A", "m/s"}, {"j", "N*s"}, {"m_A", "kg"}, {"n", "1"}}),
-      check<AngularVelocity,
-            Terms<AngularVelocity, decltype(Length() * Impulse() / Moment())>>(
+      check<AngularVelocity, Terms<AngularVelocity, decltype(Length() * Impulse() / Moment())>>(
           "IM:col2D", implemented, "omega_A(t_c+) = omega_A(t_c) + (u_AP x j n) / I_A",
           {{"omega_A", "rad/s"}, {"u_AP", "m"}, {"j", "N*s"}, {"n", "1"}, {"I_A", "kg*m^2"}}),
   };

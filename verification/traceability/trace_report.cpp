@@ -114,8 +114,8 @@ void add_items(TraceFiles& files, const TraceInputs& in) {
       md_tests += (md_tests.empty() ? "" : "<br>") + n;
       csv_tests += (csv_tests.empty() ? "" : "; ") + n;
     }
-    md += "|" + model.id + "|" + model.label + "|`" + function + "`|" + file + "|" + md_tests +
-          "|\n";
+    md +=
+        "|" + model.id + "|" + model.label + "|`" + function + "`|" + file + "|" + md_tests + "|\n";
     csv += csv_field(model.id) + "," + csv_field(model.label) + "," + csv_field(function) + "," +
            csv_field(file) + "," + csv_field(csv_tests) + "\n";
   }
@@ -148,7 +148,8 @@ TraceFiles render_traceability(const TraceInputs& in, const TraceResult& result)
   TraceFiles files;
   const auto assumptions = ids(c.assumptions);
   const auto models = model_ids(c);
-  const auto requirements = concat({ids(c.functional_requirements), ids(c.nonfunctional_requirements)});
+  const auto requirements =
+      concat({ids(c.functional_requirements), ids(c.nonfunctional_requirements)});
   const std::string x_legend = "X: the row depends on the column, as the SRS declares.";
   add(files, "assumptions_vs_assumptions",
       {"Assumptions against assumptions", x_legend, assumptions, assumptions,
@@ -171,9 +172,8 @@ TraceFiles render_traceability(const TraceInputs& in, const TraceResult& result)
                                                                     : "C");
        }});
   add(files, "requirements_vs_items",
-      {"Requirements and goals against items", x_legend,
-       concat({ids(c.goals), requirements}), concat({models, requirements}),
-       marks_of(c.requirements_vs_items)});
+      {"Requirements and goals against items", x_legend, concat({ids(c.goals), requirements}),
+       concat({models, requirements}), marks_of(c.requirements_vs_items)});
   add_items(files, in);
   add_edges(files, result);
   return files;

@@ -28,7 +28,8 @@ void check_functions_and_tests(const TraceInputs& in, std::vector<std::string>& 
                                      [&](const auto& r) { return r.id == model.id; });
     if (count == 0) problems.push_back(model.id + ": no function registers this model");
     if (count > 1) problems.push_back(model.id + ": registered by more than one function");
-    if (tests_of(in, model.id).empty()) problems.push_back(model.id + ": no test is tagged with it");
+    if (tests_of(in, model.id).empty())
+      problems.push_back(model.id + ": no test is tagged with it");
   }
   for (const auto& r : in.registrations) {
     if (!in.catalog.contains(r.id)) {
@@ -44,6 +45,11 @@ void check_functions_and_tests(const TraceInputs& in, std::vector<std::string>& 
     }
   }
   for (const auto& test : in.tests) {
+    // catch_discover_tests hands names to CMake lists, which split on ';' and group on brackets.
+    if (test.name.find_first_of("[];") != std::string::npos) {
+      problems.push_back(test.file + ": test \"" + test.name +
+                         "\" has '[', ']' or ';' in its name, which ctest cannot register");
+    }
     for (const auto& tag : test.tags) {
       if (tag.find(':') != std::string::npos && !in.catalog.contains(tag)) {
         problems.push_back(test.file + ": test \"" + test.name + "\" is tagged " + tag +

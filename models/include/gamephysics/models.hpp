@@ -1,12 +1,6 @@
 #pragma once
 // Every SRS model function: include this to have them all, registered.
 
-#include "gamephysics/models/tm/newton_second_law.hpp"
-#include "gamephysics/models/tm/newton_second_law_rotation.hpp"
-#include "gamephysics/models/tm/newton_third_law.hpp"
-#include "gamephysics/models/tm/universal_gravitation.hpp"
-#include "gamephysics/models/gd/collision_impulse.hpp"
-#include "gamephysics/models/gd/gravitational_acceleration.hpp"
 #include "gamephysics/models/dd/angular_acceleration.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
@@ -22,6 +16,12 @@
 #include "gamephysics/models/dd/potential_energy.hpp"
 #include "gamephysics/models/dd/relative_velocity.hpp"
 #include "gamephysics/models/dd/torque.hpp"
+#include "gamephysics/models/gd/collision_impulse.hpp"
+#include "gamephysics/models/gd/gravitational_acceleration.hpp"
 #include "gamephysics/models/im/collision_response.hpp"
 #include "gamephysics/models/im/rotational_motion.hpp"
 #include "gamephysics/models/im/translational_motion.hpp"
+#include "gamephysics/models/tm/newton_second_law.hpp"
+#include "gamephysics/models/tm/newton_second_law_rotation.hpp"
+#include "gamephysics/models/tm/newton_third_law.hpp"
+#include "gamephysics/models/tm/universal_gravitation.hpp"

@@ -27,6 +27,6 @@ const std::vector<Registration>& registrations();
 
 // Registers FUNCTION (unqualified, in the enclosing namespace NS) as the implementation of ID.
 // The variable is inline so the registration happens once however many files include the header.
-#define GP_REGISTER_MODEL(ID, NS, FUNCTION, ...)                                  \
-  inline const bool registered_##FUNCTION = ::gp::models::register_model(         \
+#define GP_REGISTER_MODEL(ID, NS, FUNCTION, ...)                          \
+  inline const bool registered_##FUNCTION = ::gp::models::register_model( \
       {ID, "gp::" #NS "::" #FUNCTION, __FILE__, std::vector<std::string>{__VA_ARGS__}})

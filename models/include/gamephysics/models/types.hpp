@@ -10,9 +10,13 @@ using Vec2 = Eigen::Vector2d;
 
 /// z-component of the 3D cross product a × b of two in-plane vectors (the only one that is
 /// non-zero). Units: product of the units of a and b.
-inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 /// In-plane vector (ω ẑ) × u for a rotation rate ω about the z-axis. Units: units of ω times u.
-inline Vec2 cross(double omega, const Vec2& u) { return {-omega * u.y(), omega * u.x()}; }
+inline Vec2 cross(double omega, const Vec2& u) {
+  return {-omega * u.y(), omega * u.x()};
+}
 
 }  // namespace gp

@@ -10,7 +10,9 @@ namespace gp::dd {
 /// @param arm    r, from the point (the centre of mass) to where the force acts [m]
 /// @param force  F [N]
 /// @return τ [N·m], positive counter-clockwise (A:axesDefined)
-inline double torque(const Vec2& arm, const Vec2& force) { return cross(arm, force); }
+inline double torque(const Vec2& arm, const Vec2& force) {
+  return cross(arm, force);
+}
 
 GP_REGISTER_MODEL("DD:torque", dd, torque);
 

@@ -19,9 +19,9 @@ namespace gp::gd {
 /// @param arm_b              u_BP, from B's centre of mass to the contact point P [m]
 /// @return impulse magnitude j [N·s]; positive when the bodies approach (v_i^AB · n < 0)
 inline double collision_impulse(double restitution, const Vec2& relative_velocity,
-                                 const Vec2& normal, double inverse_mass_a, double inverse_mass_b,
-                                 double inverse_moment_a, double inverse_moment_b,
-                                 const Vec2& arm_a, const Vec2& arm_b) {
+                                const Vec2& normal, double inverse_mass_a, double inverse_mass_b,
+                                double inverse_moment_a, double inverse_moment_b, const Vec2& arm_a,
+                                const Vec2& arm_b) {
   const double arm_a_cross_n = cross(arm_a, normal);
   const double arm_b_cross_n = cross(arm_b, normal);
   const double effective_inverse_mass = (inverse_mass_a + inverse_mass_b) * normal.squaredNorm() +

@@ -9,7 +9,9 @@ namespace gp::tm {
 /// @param force  net force F on the body [N]
 /// @param mass   mass m of the body [kg], m > 0
 /// @return acceleration a of the body [m/s²]
-inline Vec2 acceleration_from_force(const Vec2& force, double mass) { return force / mass; }
+inline Vec2 acceleration_from_force(const Vec2& force, double mass) {
+  return force / mass;
+}
 
 GP_REGISTER_MODEL("TM:NewtonSecLawMot", tm, acceleration_from_force);
 

@@ -8,7 +8,9 @@ namespace gp::tm {
 /// @param force  force F₁ that one body exerts on the other [N] (a force or, integrated over the
 ///               contact, an impulse [N·s]: the law holds for both)
 /// @return the reaction F₂ = −F₁ that the other body exerts back [same units]
-inline Vec2 reaction_force(const Vec2& force) { return -force; }
+inline Vec2 reaction_force(const Vec2& force) {
+  return -force;
+}
 
 GP_REGISTER_MODEL("TM:NewtonThirdLawMot", tm, reaction_force);
 
