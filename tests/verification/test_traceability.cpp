@@ -33,7 +33,7 @@ TEST_CASE("Traceability: the committed traceability/ is up to date", "[traceabil
   const auto stale = stale_traceability(files, GP_SOURCE_DIR "/traceability");
   for (const auto& name : stale) INFO("stale: traceability/" << name << " (run gamephysics trace)");
   CHECK(stale.empty());
-  CHECK(files.size() == 12);
+  CHECK(files.size() == 14);
 }
 
 TEST_CASE("Traceability: rendering is byte-for-byte reproducible", "[traceability]") {
@@ -109,4 +109,13 @@ TEST_CASE("Errata: a malformed edge or a field before any erratum is an error", 
   CHECK_THROWS_WITH(load_errata(dir / "bad_edge.md"), Catch::Contains("'FROM -> TO'"));
   CHECK_THROWS_WITH(load_errata(dir / "orphan.md"), Catch::Contains("outside an erratum"));
   CHECK_THROWS(load_errata(dir / "missing.md"));
+}
+
+TEST_CASE("README names the function and file of every SRS model", "[traceability]") {
+  std::ifstream in(GP_SOURCE_DIR "/README.md");
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const auto& r : repository().registrations) {
+    INFO(r.id);
+    CHECK(readme.find("| " + r.id + " | `" + r.function + "` |") != std::string::npos);
+  }
 }

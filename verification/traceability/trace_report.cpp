@@ -83,6 +83,13 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
+// A Markdown table cell: a '|' inside it would end the cell.
+std::string md_cell(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
+  return escaped;
+}
+
 std::string status_name(EdgeStatus status) {
   switch (status) {
     case EdgeStatus::matched:
@@ -141,6 +148,30 @@ void add_edges(TraceFiles& files, const TraceResult& result) {
   files["edges.csv"] = csv;
 }
 
+void add_dimensions(TraceFiles& files, const TraceInputs& in) {
+  std::string md =
+      "# Dimensional audit\n\nEach SRS equation with the units its symbols have in the SRS (as "
+      "written), and, where that fails, with the units this implementation gives them (as "
+      "implemented). Computed by the compiler with Boost.Units "
+      "(verification/dimensions/dimensional_audit.cpp); the radian is the SI unit 1.\n\n"
+      "|SRS id|form|equation|units|left side|right side|result|\n"
+      "|:---|:---|:---|:---|:---|:---|:---|\n";
+  std::string csv = "id,form,equation,units,lhs,rhs,consistent\n";
+  for (const auto& d : in.dimensions) {
+    std::string units;
+    for (const auto& s : d.symbols)
+      units += (units.empty() ? "" : " ") + s.symbol + "[" + s.unit + "]";
+    const std::string result = d.consistent ? "consistent" : "INCONSISTENT";
+    md += "|" + d.id + "|" + d.form + "|`" + md_cell(d.equation) + "`|" + md_cell(units) + "|" +
+          d.lhs_dimension + "|" + d.rhs_dimension + "|" + result + "|\n";
+    csv += csv_field(d.id) + "," + csv_field(d.form) + "," + csv_field(d.equation) + "," +
+           csv_field(units) + "," + csv_field(d.lhs_dimension) + "," + csv_field(d.rhs_dimension) +
+           "," + (d.consistent ? "true" : "false") + "\n";
+  }
+  files["dimensions.md"] = md;
+  files["dimensions.csv"] = csv;
+}
+
 }  // namespace
 
 TraceFiles render_traceability(const TraceInputs& in, const TraceResult& result) {
@@ -176,6 +207,7 @@ TraceFiles render_traceability(const TraceInputs& in, const TraceResult& result)
        concat({models, requirements}), marks_of(c.requirements_vs_items)});
   add_items(files, in);
   add_edges(files, result);
+  add_dimensions(files, in);
   return files;
 }
 
