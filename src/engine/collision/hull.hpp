@@ -1,0 +1,61 @@
+#pragma once
+// Polygons and segments seen alike: a segment is a two-vertex polygon with a radius, so that one
+// separating-axis routine serves polygons, capsules and lines in the narrowphase and the signed
+// distance. Internal to collision/.
+
+#include <array>
+#include <span>
+#include <variant>
+
+#include "engine/geometry/shape.hpp"
+
+namespace gp {
+
+/// A convex outline (counter-clockwise vertices with outward edge normals, m) inflated by
+/// `radius` (m). Views the storage it was made from.
+struct Hull {
+  std::span<const Vec2> vertices;
+  std::span<const Vec2> normals;
+  double radius;
+
+  int count() const { return static_cast<int>(vertices.size()); }
+  int next(int index) const { return index + 1 == count() ? 0 : index + 1; }
+};
+
+Hull hull_of(const ConvexPolygon& polygon);
+
+/// A segment as the two edges a→b and b→a; holds the storage its Hull views.
+class SegmentOutline {
+ public:
+  explicit SegmentOutline(const Segment& segment);
+  Hull hull() const { return {vertices_, normals_, radius_}; }
+
+ private:
+  std::array<Vec2, 2> vertices_;
+  std::array<Vec2, 2> normals_;
+  double radius_;
+};
+
+/// Calls `visit` with a polygon's or a segment's geometry (not a circle's) seen as a Hull, which
+/// lives only for the call.
+template <typename Visit>
+auto visit_as_hull(const ShapeGeometry& geometry, Visit&& visit) {
+  if (const auto* polygon = std::get_if<ConvexPolygon>(&geometry)) return visit(hull_of(*polygon));
+  const SegmentOutline outline(*std::get_if<Segment>(&geometry));
+  return visit(outline.hull());
+}
+
+/// The edge of `reference` along whose normal `other` is farthest out, and that distance (m):
+/// max over edges i of min over vertices v of `other` of nᵢ·(v − vᵢ). Radii are not counted.
+struct EdgeSeparation {
+  int edge;
+  double separation;
+};
+
+EdgeSeparation max_separation(const Hull& reference, const Hull& other);
+
+/// The edge of `hull` whose normal is most nearly opposite `normal`: the edge that meets the
+/// reference edge with that normal.
+int incident_edge(const Hull& hull, const Vec2& normal);
+
+}  // namespace gp

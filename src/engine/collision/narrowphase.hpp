@@ -1,0 +1,23 @@
+#pragma once
+// Exact contact between two placed shapes (FR:Determine-Collisions).
+
+#include "engine/collision/contact.hpp"
+#include "engine/geometry/world_shape.hpp"
+
+namespace gp {
+
+/// Distance (m) under which two shapes' cores count as touching and the reference edge is kept
+/// on A rather than B; half a millimetre, well below what a game can see.
+inline constexpr double kContactTolerance = 5e-4;
+
+/// The contact manifold between `a` and `b`, any kinds in either order, with the normal from b
+/// towards a. Points whose surfaces are apart by at most `margin` (m, ≥ 0) are kept as
+/// speculative points with negative depth; none are returned when the shapes are farther apart.
+/// Two segments of radius 0 never touch (lines have no area). Swapping a and b negates the
+/// normal and swaps the two halves of each feature id; the points stay the same unless both
+/// shapes offer a face separating them equally (within kContactTolerance), where the reference
+/// face is taken from a: call with the same order every frame for stable feature ids.
+/// Does not allocate.
+ContactManifold collide(const WorldShape& a, const WorldShape& b, double margin);
+
+}  // namespace gp

@@ -1,0 +1,87 @@
+#include "engine/collision/signed_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <variant>
+
+#include "engine/collision/hull.hpp"
+#include "engine/geometry/closest_points.hpp"
+
+namespace gp {
+
+namespace {
+
+// Every shape is a core (a point, a segment or a polygon) inflated by a radius. For convex cores
+// the inflated shapes' signed distance is the cores' minus both radii, so only cores are measured.
+
+/// A segment's two edges are the same line; a polygon has as many edges as vertices.
+int edge_count(const Hull& hull) {
+  return hull.count() == 2 ? 1 : hull.count();
+}
+
+double distance_to_edges(const Vec2& point, const Hull& hull) {
+  double distance = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < edge_count(hull); ++i) {
+    const Vec2& start = hull.vertices[i];
+    const Vec2& end = hull.vertices[hull.next(i)];
+    distance = std::min(distance, (point - closest_point_on_segment(point, start, end)).norm());
+  }
+  return distance;
+}
+
+double core_distance(const Vec2& point, const Hull& hull) {
+  if (hull.count() >= 3) {
+    double separation = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < hull.count(); ++i) {
+      separation = std::max(separation, hull.normals[i].dot(point - hull.vertices[i]));
+    }
+    // Inside: the nearest face is the way out.
+    if (separation <= 0.0) return separation;
+  }
+  return distance_to_edges(point, hull);
+}
+
+double core_distance(const Hull& a, const Hull& b) {
+  // Overlapping convex cores: the shortest way out is along one of the edge normals.
+  const double separation =
+      std::max(max_separation(a, b).separation, max_separation(b, a).separation);
+  if (separation < 0.0) return separation;
+  if (a.count() == 2 && b.count() == 2) {
+    // No edge normal separates collinear segments, whatever their gap: measure it. (Parallel
+    // segments never overlap in the test above: one side of a line is always clear of the other.)
+    const SegmentClosestPoints closest =
+        closest_points_between_segments(a.vertices[0], a.vertices[1], b.vertices[0], b.vertices[1]);
+    return std::sqrt(closest.distance_squared);
+  }
+  // Apart: a separating edge normal only bounds the gap from below; the gap itself is between a
+  // vertex of one and an edge of the other.
+  double distance = std::numeric_limits<double>::infinity();
+  for (const Vec2& v : a.vertices) distance = std::min(distance, distance_to_edges(v, b));
+  for (const Vec2& v : b.vertices) distance = std::min(distance, distance_to_edges(v, a));
+  return distance;
+}
+
+}  // namespace
+
+double signed_distance(const WorldShape& a, const WorldShape& b) {
+  const auto* circle_a = std::get_if<Circle>(&a.geometry);
+  const auto* circle_b = std::get_if<Circle>(&b.geometry);
+  if (circle_a != nullptr && circle_b != nullptr) {
+    return (circle_a->center - circle_b->center).norm() - circle_a->radius - circle_b->radius;
+  }
+  if (circle_a != nullptr || circle_b != nullptr) {
+    const Circle& circle = circle_a != nullptr ? *circle_a : *circle_b;
+    const ShapeGeometry& other = circle_a != nullptr ? b.geometry : a.geometry;
+    return visit_as_hull(other, [&](const Hull& hull) {
+      return core_distance(circle.center, hull) - circle.radius - hull.radius;
+    });
+  }
+  return visit_as_hull(a.geometry, [&](const Hull& hull_a) {
+    return visit_as_hull(b.geometry, [&](const Hull& hull_b) {
+      return core_distance(hull_a, hull_b) - hull_a.radius - hull_b.radius;
+    });
+  });
+}
+
+}  // namespace gp

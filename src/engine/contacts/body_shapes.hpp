@@ -1,0 +1,36 @@
+#pragma once
+// Every shape of the space with its body and surface, and where each is in the world.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/body.hpp"
+#include "engine/dynamics/force_model.hpp"
+#include "engine/geometry/world_shape.hpp"
+
+namespace gp {
+
+/// A shape of a body, in the body frame centred on the centre of mass.
+struct ShapeRecord {
+  BodyId body;
+  Shape local;
+  double restitution;
+  double friction;
+  bool moves;  ///< false for the shapes of static bodies
+};
+
+/// The shapes of a space, and their world placement for a given motion state.
+class BodyShapes {
+ public:
+  void add(ShapeRecord record) { records_.push_back(std::move(record)); }
+  std::size_t size() const { return records_.size(); }
+  const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
+
+  /// Places every moving shape by its body's state (static shapes once, on the first call).
+  void place(const MotionState& s, std::vector<WorldShape>& world) const;
+
+ private:
+  std::vector<ShapeRecord> records_;
+};
+
+}  // namespace gp

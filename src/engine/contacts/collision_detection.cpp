@@ -1,0 +1,91 @@
+#include "engine/contacts/collision_detection.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/collision/narrowphase.hpp"
+#include "engine/geometry/transform.hpp"
+
+namespace gp {
+
+namespace {
+// A world direction in the axes of a body turned by `angle`.
+Vec2 to_body_axes(const Vec2& v, double angle) {
+  return Transform(Vec2::Zero(), -angle).rotate(v);
+}
+}  // namespace
+
+const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
+    const BodyShapes& shapes, const std::vector<char>& dynamic,
+    const std::vector<WorldShape>& start, const std::vector<WorldShape>& end) {
+  proxies_.resize(shapes.size());
+  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+    const Aabb& a = start[i].bounds;
+    const Aabb& b = end[i].bounds;
+    proxies_[i] = {i, Aabb{a.min.cwiseMin(b.min), a.max.cwiseMax(b.max)}, !dynamic[shapes[i].body]};
+  }
+  const auto& found = broadphase_.find_pairs(proxies_);
+  pairs_.clear();
+  for (const ProxyPair& p : found) {
+    // Two parts of one body never collide; a pair needs a body that collisions can move.
+    if (shapes[p.first].body == shapes[p.second].body) continue;
+    if (!dynamic[shapes[p.first].body] && !dynamic[shapes[p.second].body]) continue;
+    pairs_.push_back(p);
+  }
+  // Sorted pairs make the order of the solver, and so the result, independent of the
+  // broadphase's internal order.
+  std::sort(pairs_.begin(), pairs_.end());
+  return pairs_;
+}
+
+void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
+                                       const BodyShapes& shapes,
+                                       const std::vector<WorldShape>& world, const MotionState& s,
+                                       const std::vector<Contact>& previous, double impulse_scale,
+                                       std::vector<Contact>& contacts) const {
+  contacts.clear();
+  auto old = previous.begin();
+  for (const ProxyPair& p : pairs) {
+    const ContactManifold m = collide(world[p.first], world[p.second], margin_);
+    if (m.count == 0) continue;
+    const ShapeRecord& a = shapes[p.first];
+    const ShapeRecord& b = shapes[p.second];
+    Contact c{p.first,
+              p.second,
+              a.body,
+              b.body,
+              m.normal,
+              m.count,
+              {},
+              std::max(a.restitution, b.restitution),
+              std::sqrt(a.friction * b.friction)};
+    // previous is sorted by key, and so are the pairs: one forward scan matches them.
+    while (old != previous.end() && old->key() < c.key()) ++old;
+    const bool matched = old != previous.end() && old->key() == c.key();
+    for (int k = 0; k < m.count; ++k) {
+      const ContactPoint& point = m.points[k];
+      ContactPointState& q = c.points[k];
+      q.id = point.id;
+      q.depth = point.depth;
+      q.arm_a = point.position - s.position[a.body];
+      q.arm_b = point.position - s.position[b.body];
+      // The deepest points of each shape inside the other, fixed in their bodies, measure the
+      // penetration again after the bodies move (position correction).
+      const Vec2 deepest_a = point.position - 0.5 * point.depth * m.normal;
+      const Vec2 deepest_b = point.position + 0.5 * point.depth * m.normal;
+      q.local_anchor_a = to_body_axes(deepest_a - s.position[a.body], s.angle[a.body]);
+      q.local_anchor_b = to_body_axes(deepest_b - s.position[b.body], s.angle[b.body]);
+      if (matched) {
+        for (int j = 0; j < old->count; ++j) {
+          if (old->points[j].id == q.id) {
+            q.normal_impulse = impulse_scale * old->points[j].normal_impulse;
+            q.tangent_impulse = impulse_scale * old->points[j].tangent_impulse;
+          }
+        }
+      }
+    }
+    contacts.push_back(c);
+  }
+}
+
+}  // namespace gp

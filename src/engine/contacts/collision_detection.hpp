@@ -1,0 +1,42 @@
+#pragma once
+// FR:Determine-Collisions: which shapes are close (broadphase, sweep and prune on boxes swept over
+// the step) and where they touch (narrowphase manifolds), as contact constraints carrying the
+// impulses of the previous step for warm starting.
+
+#include <vector>
+
+#include "engine/collision/broadphase.hpp"
+#include "engine/contacts/body_shapes.hpp"
+#include "engine/contacts/contact.hpp"
+
+namespace gp {
+
+class CollisionDetection {
+ public:
+  /// `margin` [m]: shapes this far apart already get (speculative) contact points.
+  explicit CollisionDetection(double margin) : margin_(margin), broadphase_(margin) {}
+
+  /// The pairs of shapes of different bodies, at least one of them dynamic, whose boxes overlap
+  /// when each is grown to cover both its `start` and its `end` placement.
+  const std::vector<ProxyPair>& candidate_pairs(const BodyShapes& shapes,
+                                                const std::vector<char>& dynamic,
+                                                const std::vector<WorldShape>& start,
+                                                const std::vector<WorldShape>& end);
+
+  /// The contacts of `pairs` at placement `world` of state `s`, sorted by key; a point whose pair
+  /// and features were in `previous` starts with its impulses times `impulse_scale`.
+  void find_contacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
+                     const std::vector<WorldShape>& world, const MotionState& s,
+                     const std::vector<Contact>& previous, double impulse_scale,
+                     std::vector<Contact>& contacts) const;
+
+  double margin() const { return margin_; }
+
+ private:
+  double margin_;
+  SweepAndPrune broadphase_;
+  std::vector<BroadphaseProxy> proxies_;
+  std::vector<ProxyPair> pairs_;
+};
+
+}  // namespace gp

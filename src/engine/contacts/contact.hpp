@@ -1,0 +1,40 @@
+#pragma once
+// A contact constraint between two shapes, as the solver keeps it from one step to the next.
+
+#include <array>
+#include <cstdint>
+
+#include "engine/collision/contact.hpp"
+#include "engine/dynamics/force_model.hpp"
+
+namespace gp {
+
+/// One point of a contact constraint.
+struct ContactPointState {
+  FeatureId id;
+  Vec2 arm_a = Vec2::Zero();            ///< m, from A's centre of mass to the point
+  Vec2 arm_b = Vec2::Zero();            ///< m, from B's centre of mass to the point
+  Vec2 local_anchor_a = Vec2::Zero();   ///< m, A's deepest point, in A's frame
+  Vec2 local_anchor_b = Vec2::Zero();   ///< m, B's deepest point, in B's frame
+  double depth = 0.0;                   ///< m, overlap at detection (negative: still apart)
+  double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
+  double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
+  double target_normal_velocity = 0.0;  ///< m/s, what the solver drives v_rel·n to at least
+};
+
+struct Contact {
+  std::uint32_t shape_a;
+  std::uint32_t shape_b;
+  BodyId body_a;
+  BodyId body_b;
+  Vec2 normal;  ///< unit, world, from B towards A
+  int count;
+  std::array<ContactPointState, 2> points;
+  double restitution;  ///< C_R = max of the two shapes'
+  double friction;     ///< μ = √(μ_a μ_b)
+
+  /// Orders contacts, and so matches them from step to step, by their pair of shapes.
+  std::uint64_t key() const { return (std::uint64_t{shape_a} << 32) | shape_b; }
+};
+
+}  // namespace gp

@@ -1,0 +1,136 @@
+#include "engine/contacts/contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/geometry/transform.hpp"
+#include "gamephysics/models/dd/angular_displacement.hpp"
+#include "gamephysics/models/dd/chasles_theorem.hpp"
+#include "gamephysics/models/dd/impulse.hpp"
+#include "gamephysics/models/dd/relative_velocity.hpp"
+#include "gamephysics/models/dd/torque.hpp"
+#include "gamephysics/models/gd/collision_impulse.hpp"
+#include "gamephysics/models/tm/newton_third_law.hpp"
+
+namespace gp {
+
+namespace {
+
+Vec2 tangent_of(const Vec2& normal) {
+  return {-normal.y(), normal.x()};
+}
+
+// Impulse that brings v_rel·direction to `target`, with the effective mass of GD:impulse.
+double impulse_towards(const BodyInertia& m, const Contact& c, const ContactPointState& p,
+                       const Vec2& v_rel, const Vec2& direction, double target) {
+  return gd::collision_impulse(0.0, v_rel - target * direction, direction, m.inverse_mass[c.body_a],
+                               m.inverse_mass[c.body_b], m.inverse_moment[c.body_a],
+                               m.inverse_moment[c.body_b], p.arm_a, p.arm_b);
+}
+
+// Applies `impulse` to A at its arm and the reaction to B (DD:impulseV, DD:torque,
+// TM:NewtonThirdLawMot).
+void apply(const BodyInertia& m, const Contact& c, const ContactPointState& p, const Vec2& impulse,
+           MotionState& s) {
+  const Vec2 reaction = tm::reaction_force(impulse);
+  s.velocity[c.body_a] += dd::velocity_change_from_impulse(impulse, m.inverse_mass[c.body_a]);
+  s.angular_velocity[c.body_a] += dd::torque(p.arm_a, impulse) * m.inverse_moment[c.body_a];
+  s.velocity[c.body_b] += dd::velocity_change_from_impulse(reaction, m.inverse_mass[c.body_b]);
+  s.angular_velocity[c.body_b] += dd::torque(p.arm_b, reaction) * m.inverse_moment[c.body_b];
+}
+
+}  // namespace
+
+Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
+  return dd::relative_velocity(
+      dd::point_velocity(s.velocity[c.body_a], s.angular_velocity[c.body_a], p.arm_a),
+      dd::point_velocity(s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b));
+}
+
+void set_targets(std::vector<Contact>& contacts, const MotionState& before, double h,
+                 const Settings& settings) {
+  for (Contact& c : contacts) {
+    for (int k = 0; k < c.count; ++k) {
+      ContactPointState& p = c.points[k];
+      const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
+      p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
+      const bool touching = p.depth > -settings.linear_slop;
+      if (touching && approach < -settings.restitution_threshold) {
+        p.target_normal_velocity = std::max(p.target_normal_velocity, -c.restitution * approach);
+      }
+    }
+  }
+}
+
+void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s) {
+  for (const Contact& c : contacts) {
+    for (int k = 0; k < c.count; ++k) {
+      const ContactPointState& p = c.points[k];
+      apply(inertia, c, p, p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal),
+            s);
+    }
+  }
+}
+
+void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
+                      MotionState& s) {
+  for (int i = 0; i < iterations; ++i) {
+    for (Contact& c : contacts) {
+      const Vec2 tangent = tangent_of(c.normal);
+      for (int k = 0; k < c.count; ++k) {
+        ContactPointState& p = c.points[k];
+        if (c.friction > 0.0) {
+          // Friction first, so the normal constraint, solved last, is the one met exactly.
+          const double limit = c.friction * p.normal_impulse;
+          const double change =
+              impulse_towards(inertia, c, p, contact_relative_velocity(s, c, p), tangent, 0.0);
+          const double total = std::clamp(p.tangent_impulse + change, -limit, limit);
+          apply(inertia, c, p, (total - p.tangent_impulse) * tangent, s);
+          p.tangent_impulse = total;
+        }
+        const double change = impulse_towards(inertia, c, p, contact_relative_velocity(s, c, p),
+                                              c.normal, p.target_normal_velocity);
+        const double total = std::max(p.normal_impulse + change, 0.0);
+        apply(inertia, c, p, (total - p.normal_impulse) * c.normal, s);
+        p.normal_impulse = total;
+      }
+    }
+  }
+}
+
+void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+                       int iterations, double slop, MotionState& s) {
+  constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
+  constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
+  for (int i = 0; i < iterations; ++i) {
+    for (const Contact& c : contacts) {
+      for (int k = 0; k < c.count; ++k) {
+        const ContactPointState& p = c.points[k];
+        const Transform frame_a(s.position[c.body_a], s.angle[c.body_a]);
+        const Transform frame_b(s.position[c.body_b], s.angle[c.body_b]);
+        const Vec2 anchor_a = frame_a.apply(p.local_anchor_a);
+        const Vec2 anchor_b = frame_b.apply(p.local_anchor_b);
+        const double separation = (anchor_a - anchor_b).dot(c.normal);
+        const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
+        if (excess == 0.0) continue;
+        ContactPointState arms = p;
+        arms.arm_a = anchor_a - s.position[c.body_a];
+        arms.arm_b = anchor_b - s.position[c.body_b];
+        // The same effective mass as for impulses, applied to a displacement instead of a velocity.
+        const double push = impulse_towards(inertia, c, arms, excess * c.normal, c.normal, 0.0);
+        const Vec2 shift = push * c.normal;
+        s.position[c.body_a] +=
+            dd::velocity_change_from_impulse(shift, inertia.inverse_mass[c.body_a]);
+        s.angle[c.body_a] = dd::rotated_orientation(
+            s.angle[c.body_a], dd::torque(arms.arm_a, shift) * inertia.inverse_moment[c.body_a]);
+        const Vec2 back = tm::reaction_force(shift);
+        s.position[c.body_b] +=
+            dd::velocity_change_from_impulse(back, inertia.inverse_mass[c.body_b]);
+        s.angle[c.body_b] = dd::rotated_orientation(
+            s.angle[c.body_b], dd::torque(arms.arm_b, back) * inertia.inverse_moment[c.body_b]);
+      }
+    }
+  }
+}
+
+}  // namespace gp

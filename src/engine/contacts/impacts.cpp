@@ -1,0 +1,188 @@
+#include "engine/contacts/impacts.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cmath>
+#include <cstdint>
+
+#include "engine/collision/narrowphase.hpp"
+#include "engine/collision/signed_distance.hpp"
+#include "engine/geometry/transform.hpp"
+#include "gamephysics/models/dd/angular_acceleration.hpp"
+#include "gamephysics/models/dd/angular_displacement.hpp"
+#include "gamephysics/models/dd/angular_velocity.hpp"
+#include "gamephysics/models/dd/linear_acceleration.hpp"
+#include "gamephysics/models/dd/linear_displacement.hpp"
+#include "gamephysics/models/dd/linear_velocity.hpp"
+#include "gamephysics/models/im/collision_response.hpp"
+
+namespace gp {
+
+Vec2 Ballistic::position(BodyId body, double tau) const {
+  const Vec2 mean_velocity = start.velocity[body] + dd::velocity_change_from_acceleration(
+                                                        acceleration.linear[body], tau / 2);
+  return dd::displaced_position(start.position[body],
+                                dd::displacement_from_velocity(mean_velocity, tau));
+}
+
+double Ballistic::angle(BodyId body, double tau) const {
+  const double mean_omega =
+      start.angular_velocity[body] +
+      dd::angular_velocity_change_from_acceleration(acceleration.angular[body], tau / 2);
+  return dd::rotated_orientation(start.angle[body],
+                                 dd::angular_displacement_from_velocity(mean_omega, tau));
+}
+
+namespace {
+
+// Farthest any point of the shape is from its body's centre of mass [m].
+double reach(const Shape& shape) {
+  return std::visit(
+      [](const auto& g) -> double {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Circle>) {
+          return g.center.norm() + g.radius;
+        } else if constexpr (std::is_same_v<G, Segment>) {
+          return std::max(g.a.norm(), g.b.norm()) + g.radius;
+        } else {
+          double r = 0.0;
+          for (int i = 0; i < g.count; ++i) r = std::max(r, g.vertices[i].norm());
+          return r;
+        }
+      },
+      shape.geometry());
+}
+
+// Fastest any point of the shape can move during a step of h [s], a bound [m/s].
+double speed_bound(const ShapeRecord& r, const Ballistic& m, double h) {
+  const BodyId b = r.body;
+  return m.start.velocity[b].norm() + m.acceleration.linear[b].norm() * h +
+         (std::abs(m.start.angular_velocity[b]) + std::abs(m.acceleration.angular[b]) * h) *
+             reach(r.local);
+}
+
+}  // namespace
+
+std::optional<double> ImpactSearch::time_of_impact(const ShapeRecord& a, const ShapeRecord& b,
+                                                   const Ballistic& motion, double h,
+                                                   double slop) const {
+  const auto distance = [&](double tau) {
+    return signed_distance(
+        to_world(a.local, Transform(motion.position(a.body, tau), motion.angle(a.body, tau))),
+        to_world(b.local, Transform(motion.position(b.body, tau), motion.angle(b.body, tau))));
+  };
+  const double d0 = distance(0.0);
+  if (d0 <= slop) return std::nullopt;  // already in contact: the contact solver's business
+  const double d1 = distance(h);
+  if (d1 <= 0.0) {
+    // Bracketed: TOMS 748 converges superlinearly on the smooth distance of ballistic motion.
+    std::uintmax_t iterations = 100;
+    const auto [lo, hi] = boost::math::tools::toms748_solve(
+        distance, 0.0, h, d0, d1, boost::math::tools::eps_tolerance<double>(50), iterations);
+    (void)hi;
+    return lo;
+  }
+  // Apart at both ends: they can only have met in between if they could close d0 + d1 in h.
+  const double bound = speed_bound(a, motion, h) + speed_bound(b, motion, h);
+  if (bound * h < d0 + d1) return std::nullopt;
+  // Conservative advancement: never step further than the gap could close.
+  constexpr double kTouch = 1e-9;  // m
+  double tau = 0.0, d = d0;
+  for (int i = 0; i < 100; ++i) {
+    tau += d / bound;
+    if (tau >= h) return std::nullopt;
+    d = distance(tau);
+    if (d <= kTouch) return tau;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs,
+                                             const BodyShapes& shapes, const Ballistic& motion,
+                                             double h, double slop) {
+  touching_.clear();
+  std::optional<double> best;
+  const double same_time = 1e-12 + 1e-9 * h;  // s: impacts this close count as simultaneous
+  for (const ProxyPair& p : pairs) {
+    const auto tau = time_of_impact(shapes[p.first], shapes[p.second], motion, h, slop);
+    if (!tau) continue;
+    if (!best || *tau < *best - same_time) {
+      best = tau;
+      touching_.assign(1, p);
+    } else if (*tau <= *best + same_time) {
+      touching_.push_back(p);
+    }
+  }
+  return best;
+}
+
+void resolve_impacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
+                     const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
+                     std::vector<Impact>& log) {
+  std::vector<Contact> contacts;
+  for (const ProxyPair& p : pairs) {
+    const ShapeRecord& a = shapes[p.first];
+    const ShapeRecord& b = shapes[p.second];
+    const ContactManifold m = collide(
+        to_world(a.local, Transform(s.position[a.body], s.angle[a.body])),
+        to_world(b.local, Transform(s.position[b.body], s.angle[b.body])), settings.contact_margin);
+    if (m.count == 0) continue;
+    Contact c{p.first,
+              p.second,
+              a.body,
+              b.body,
+              m.normal,
+              m.count,
+              {},
+              std::max(a.restitution, b.restitution),
+              std::sqrt(a.friction * b.friction)};
+    for (int k = 0; k < m.count; ++k) {
+      c.points[k].id = m.points[k].id;
+      c.points[k].arm_a = m.points[k].position - s.position[a.body];
+      c.points[k].arm_b = m.points[k].position - s.position[b.body];
+    }
+    contacts.push_back(c);
+  }
+  const auto approach = [&s](const Contact& c, const ContactPointState& p) {
+    return contact_relative_velocity(s, c, p).dot(c.normal);
+  };
+  if (contacts.size() == 1 && contacts[0].count == 1 && contacts[0].friction == 0.0) {
+    // One frictionless point: IM:col2D exactly.
+    const Contact& c = contacts[0];
+    const ContactPointState& p = c.points[0];
+    const double restitution =
+        approach(c, p) < -settings.restitution_threshold ? c.restitution : 0.0;
+    const im::CollidingBody body_a{inertia.inverse_mass[c.body_a], inertia.inverse_moment[c.body_a],
+                                   s.velocity[c.body_a], s.angular_velocity[c.body_a], p.arm_a};
+    const im::CollidingBody body_b{inertia.inverse_mass[c.body_b], inertia.inverse_moment[c.body_b],
+                                   s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b};
+    const auto r = im::collision_response(body_a, body_b, c.normal, restitution);
+    s.velocity[c.body_a] = r.velocity_a;
+    s.angular_velocity[c.body_a] = r.angular_velocity_a;
+    s.velocity[c.body_b] = r.velocity_b;
+    s.angular_velocity[c.body_b] = r.angular_velocity_b;
+    log.push_back(
+        {t, c.body_a, c.body_b, c.normal, c.points[0].arm_a + s.position[c.body_a], r.impulse});
+    return;
+  }
+  for (Contact& c : contacts) {
+    for (int k = 0; k < c.count; ++k) {
+      const double v = approach(c, c.points[k]);
+      c.points[k].target_normal_velocity =
+          v < -settings.restitution_threshold ? -c.restitution * v : 0.0;
+    }
+  }
+  // Enough passes for Gauss–Seidel to converge on a handful of simultaneous points.
+  solve_velocities(contacts, inertia, 64, s);
+  for (const Contact& c : contacts) {
+    Vec2 point = Vec2::Zero();
+    double impulse = 0.0;
+    for (int k = 0; k < c.count; ++k) {
+      point += (c.points[k].arm_a + s.position[c.body_a]) / c.count;
+      impulse += c.points[k].normal_impulse;
+    }
+    log.push_back({t, c.body_a, c.body_b, c.normal, point, impulse});
+  }
+}
+
+}  // namespace gp

@@ -1,0 +1,36 @@
+#pragma once
+// The state the integrators advance, as structure of arrays indexed by body id: one contiguous
+// array per quantity keeps the hot loops over bodies cache-friendly.
+
+#include <vector>
+
+#include "gamephysics/models/types.hpp"
+
+namespace gp {
+
+struct MotionState {
+  std::vector<Vec2> position;            ///< m, centre of mass
+  std::vector<double> angle;             ///< rad, in [0, 2π)
+  std::vector<Vec2> velocity;            ///< m/s
+  std::vector<double> angular_velocity;  ///< rad/s
+
+  void resize(std::size_t n) {
+    position.resize(n);
+    angle.resize(n);
+    velocity.resize(n);
+    angular_velocity.resize(n);
+  }
+};
+
+/// Accelerations of every body, indexed by body id.
+struct Accelerations {
+  std::vector<Vec2> linear;     ///< m/s²
+  std::vector<double> angular;  ///< rad/s²
+
+  void resize(std::size_t n) {
+    linear.resize(n);
+    angular.resize(n);
+  }
+};
+
+}  // namespace gp

@@ -1,0 +1,25 @@
+#pragma once
+// Axis-aligned bounding box: the cheap stand-in for a shape in the broadphase.
+
+#include "gamephysics/models/types.hpp"
+
+namespace gp {
+
+/// Box [min.x, max.x] × [min.y, max.y] in world coordinates (m). Closed: touching boxes overlap.
+struct Aabb {
+  Vec2 min;
+  Vec2 max;
+
+  bool overlaps(const Aabb& other) const {
+    return min.x() <= other.max.x() && other.min.x() <= max.x() && min.y() <= other.max.y() &&
+           other.min.y() <= max.y();
+  }
+
+  /// This box grown by `margin` (m) on every side.
+  Aabb fattened(double margin) const {
+    const Vec2 grow(margin, margin);
+    return {min - grow, max + grow};
+  }
+};
+
+}  // namespace gp

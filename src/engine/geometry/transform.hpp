@@ -1,0 +1,40 @@
+#pragma once
+// Rigid placement of a body frame in the world: where shapes given in body coordinates end up.
+
+#include <cmath>
+
+#include "gamephysics/models/types.hpp"
+
+namespace gp {
+
+/// Rotation by `angle` (rad, counter-clockwise) followed by a translation to `position` (m).
+/// The engine puts a body frame's origin at the body's centre of mass, so `position` is the
+/// centre of mass in world coordinates and shape coordinates are relative to it.
+class Transform {
+ public:
+  /// The identity.
+  Transform() = default;
+  Transform(const Vec2& position, double angle)
+      : position_(position), angle_(angle), cos_(std::cos(angle)), sin_(std::sin(angle)) {}
+
+  /// m, world.
+  const Vec2& position() const { return position_; }
+  /// rad, counter-clockwise.
+  double angle() const { return angle_; }
+
+  /// A direction (e.g. a unit normal) turned from body to world axes; no translation.
+  Vec2 rotate(const Vec2& v) const {
+    return {cos_ * v.x() - sin_ * v.y(), sin_ * v.x() + cos_ * v.y()};
+  }
+  /// A point (m) mapped from body to world coordinates.
+  Vec2 apply(const Vec2& p) const { return position_ + rotate(p); }
+
+ private:
+  Vec2 position_ = Vec2::Zero();
+  double angle_ = 0.0;
+  // Cached so that placing a polygon costs no trigonometry per vertex.
+  double cos_ = 1.0;
+  double sin_ = 0.0;
+};
+
+}  // namespace gp

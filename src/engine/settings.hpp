@@ -1,0 +1,38 @@
+#pragma once
+// The settings of a Space: the forces of the world, the integrator and the contact solver.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "gamephysics/models/types.hpp"
+
+namespace gp {
+
+/// The game integrators behind one interface (LC:Variable-ODE-Solver).
+enum class IntegratorKind { SymplecticEuler, VelocityVerlet, RK4 };
+
+/// "symplectic_euler", "velocity_verlet", "rk4".
+std::string_view integrator_name(IntegratorKind kind);
+/// The kind named `name`, or nothing.
+std::optional<IntegratorKind> integrator_from_name(std::string_view name);
+
+struct Settings {
+  Vec2 gravity = Vec2::Zero();  ///< g [m/s²], uniform
+  std::optional<double> G;      ///< gravitational constant [m³/(kg·s²)]: pairwise gravitation
+  /// Velocity Verlet by default: second order, symplectic, one force evaluation per step, and
+  /// exact under constant acceleration (free flight under gravity and constant forces).
+  IntegratorKind integrator = IntegratorKind::VelocityVerlet;
+  int velocity_iterations = 10;  ///< sequential-impulse passes over the contacts per step
+  int position_iterations = 4;   ///< penetration-removal passes per step
+  /// Impacts slower than this [m/s] are treated as resting contact (no bounce), which ends the
+  /// infinite sequence of ever smaller bounces (a Zeno sequence) of an inelastic ball.
+  double restitution_threshold = 0.05;
+  /// At most this many impacts per step are resolved at their exact time of impact; the rest of
+  /// the step's contacts are resolved at the end of the step.
+  int max_impacts_per_step = 16;
+  double linear_slop = 0.002;    ///< m: penetration allowed before position correction acts
+  double contact_margin = 0.02;  ///< m: shapes this close get (speculative) contact points
+};
+
+}  // namespace gp

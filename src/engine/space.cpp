@@ -1,0 +1,182 @@
+#include "engine/space.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "engine/geometry/transform.hpp"
+#include "engine/input_error.hpp"
+#include "engine/numerical_error.hpp"
+#include "engine/setup/mass_setup.hpp"
+#include "engine/setup/shape_offset.hpp"
+#include "engine/setup/validation.hpp"
+#include "gamephysics/models/dd/angular_displacement.hpp"
+#include "gamephysics/models/dd/angular_velocity.hpp"
+#include "gamephysics/models/dd/linear_displacement.hpp"
+#include "gamephysics/models/dd/linear_velocity.hpp"
+
+namespace gp {
+
+Space::Space(const Settings& settings)
+    : settings_((validate_settings(settings), settings)),
+      forces_(settings),
+      integrator_(make_integrator(settings.integrator)),
+      detection_(settings.contact_margin) {}
+
+Space::~Space() = default;
+
+BodyId Space::add_body(const BodyDef& def) {
+  const auto id = static_cast<BodyId>(names_.size());
+  const std::string prefix = "bodies[" + std::to_string(id) + "]";
+  validate_body(def, prefix);
+  const MassSetup mass = mass_setup(def);
+  const bool dynamic = def.type == BodyType::Dynamic;
+  const bool rotates = dynamic && mass.moment > 0.0;
+  if (dynamic && !rotates && (def.angular_velocity != 0.0 || def.torque != 0.0)) {
+    throw InputError(prefix + ".moment", "is required for a body without area that rotates",
+                     "none");
+  }
+  names_.push_back(def.name);
+  types_.push_back(def.type);
+  dynamic_.push_back(dynamic);
+  inertia_.inverse_mass.push_back(dynamic ? 1.0 / mass.mass : 0.0);
+  inertia_.inverse_moment.push_back(rotates ? 1.0 / mass.moment : 0.0);
+  const Transform frame(def.position, def.angle);
+  state_.position.push_back(frame.apply(mass.local_center));
+  state_.angle.push_back(dd::rotated_orientation(def.angle, 0.0));
+  state_.velocity.push_back(def.type == BodyType::Static ? Vec2::Zero() : def.velocity);
+  state_.angular_velocity.push_back(def.type == BodyType::Static ? 0.0 : def.angular_velocity);
+  if (dynamic) {
+    forces_.add(id, {mass.mass, inertia_.inverse_moment.back(), def.force, def.torque,
+                     def.force_point.has_value(),
+                     def.force_point.value_or(mass.local_center) - mass.local_center, nullptr});
+  }
+  if (def.type == BodyType::Kinematic) kinematic_.push_back(id);
+  for (const ShapeDef& s : def.shapes) {
+    shapes_.add({id, translated(s.shape, -mass.local_center), s.restitution, s.friction,
+                 def.type != BodyType::Static});
+  }
+  if (!def.shapes.empty()) {
+    ++bodies_with_shapes_;
+    bool any_dynamic_shape = false;
+    for (std::size_t i = 0; i < shapes_.size(); ++i)
+      any_dynamic_shape |= dynamic_[shapes_[i].body] != 0;
+    collides_ = bodies_with_shapes_ >= 2 && any_dynamic_shape;
+  }
+  world_start_.clear();  // the static shapes are placed again on the next step
+  return id;
+}
+
+void Space::set_force_callback(BodyId body, ForceCallback callback) {
+  forces_.set_callback(body, std::move(callback));
+}
+
+double Space::mass(BodyId body) const {
+  const double inverse = inertia_.inverse_mass[body];
+  return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+}
+
+double Space::moment(BodyId body) const {
+  const double inverse = inertia_.inverse_moment[body];
+  return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+}
+
+BodyState Space::state(BodyId body) const {
+  return {state_.position[body], state_.angle[body], state_.velocity[body],
+          state_.angular_velocity[body]};
+}
+
+void Space::step(double dt) {
+  validate_step(dt, "dt");
+  impacts_.clear();
+  impacts_this_step_ = 0;
+  double remaining = dt;
+  // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
+  while (remaining > 0.0) remaining -= substep(remaining);
+  for (BodyId j : forces_.bodies()) {
+    if (!state_.position[j].allFinite() || !state_.velocity[j].allFinite() ||
+        !std::isfinite(state_.angle[j]) || !std::isfinite(state_.angular_velocity[j])) {
+      throw NumericalError(names_[j], time_);
+    }
+  }
+}
+
+void Space::move_kinematic(double h) {
+  for (BodyId k : kinematic_) {
+    state_.position[k] = dd::displaced_position(
+        state_.position[k], dd::displacement_from_velocity(state_.velocity[k], h));
+    state_.angle[k] = dd::rotated_orientation(
+        state_.angle[k], dd::angular_displacement_from_velocity(state_.angular_velocity[k], h));
+  }
+}
+
+void Space::apply_impulse_displacement(double h) {
+  const double share = integrator_->impulse_position_share() * h;
+  for (BodyId j : forces_.bodies()) {
+    state_.position[j] += share * (state_.velocity[j] - trial_.velocity[j]);
+    state_.angle[j] = dd::rotated_orientation(
+        state_.angle[j], share * (state_.angular_velocity[j] - trial_.angular_velocity[j]));
+  }
+}
+
+double Space::substep(double h) {
+  start_ = state_;
+  const std::vector<ProxyPair>* impact_pairs = nullptr;
+  if (collides_) {
+    shapes_.place(start_, world_start_);
+    start_acceleration_.resize(state_.position.size());
+    forces_.evaluate(time_, start_, start_acceleration_);
+    const Ballistic motion{start_, start_acceleration_};
+    // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
+    ballistic_end_ = start_;
+    for (BodyId j : forces_.bodies()) {
+      ballistic_end_.position[j] = motion.position(j, h);
+      ballistic_end_.angle[j] = motion.angle(j, h);
+    }
+    for (BodyId k : kinematic_) {
+      ballistic_end_.position[k] = start_.position[k] + h * start_.velocity[k];
+      ballistic_end_.angle[k] = start_.angle[k] + h * start_.angular_velocity[k];
+    }
+    shapes_.place(ballistic_end_, world_end_);
+    const auto& pairs = detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
+    contact_pairs_.assign(pairs.begin(), pairs.end());
+    if (impacts_this_step_ < settings_.max_impacts_per_step) {
+      const auto tau =
+          impact_search_.earliest(contact_pairs_, shapes_, motion, h, settings_.linear_slop);
+      if (tau && *tau < h) {
+        h = *tau;
+        impact_pairs = &impact_search_.touching();
+        // The impact pairs are resolved exactly at t_c; their gap must not be closed by the
+        // contact solver before it.
+        std::erase_if(contact_pairs_, [impact_pairs](const ProxyPair& p) {
+          return std::find(impact_pairs->begin(), impact_pairs->end(), p) != impact_pairs->end();
+        });
+      }
+    }
+    const double scale = previous_h_ > 0.0 ? h / previous_h_ : 0.0;
+    detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, previous_contacts_,
+                             scale, contacts_);
+  }
+  integrator_->advance(forces_, time_, h, state_);
+  move_kinematic(h);
+  if (!contacts_.empty()) {
+    trial_ = state_;
+    set_targets(contacts_, start_, h, settings_);
+    warm_start(contacts_, inertia_, state_);
+    solve_velocities(contacts_, inertia_, settings_.velocity_iterations, state_);
+    apply_impulse_displacement(h);
+    correct_positions(contacts_, inertia_, settings_.position_iterations, settings_.linear_slop,
+                      state_);
+  }
+  time_ += h;
+  if (impact_pairs) {
+    resolve_impacts(*impact_pairs, shapes_, inertia_, settings_, time_, state_, impacts_);
+    ++impacts_this_step_;
+  }
+  std::swap(previous_contacts_, contacts_);
+  contacts_.clear();
+  previous_h_ = h;
+  return h;
+}
+
+}  // namespace gp

@@ -1,0 +1,92 @@
+#pragma once
+// FR:Simulation-Space: the space that owns the bodies and the settings, and advances them in time
+// (FR:Calculate-Translation-Over-Time, FR:Calculate-Rotation-Over-Time, FR:Determine-Collisions,
+// FR:Determine-Collision-Response-Over-Time).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/body.hpp"
+#include "engine/contacts/body_shapes.hpp"
+#include "engine/contacts/collision_detection.hpp"
+#include "engine/contacts/contact_solver.hpp"
+#include "engine/contacts/impacts.hpp"
+#include "engine/dynamics/force_model.hpp"
+#include "engine/dynamics/integrator.hpp"
+#include "engine/pipeline.hpp"
+#include "engine/settings.hpp"
+
+namespace gp {
+
+class Space {
+ public:
+  /// Throws InputError if the settings break a constraint.
+  explicit Space(const Settings& settings = {});
+  ~Space();
+  Space(const Space&) = delete;
+  Space& operator=(const Space&) = delete;
+
+  /// Adds a body; throws InputError naming "bodies[i].field" when `def` breaks an SRS data
+  /// constraint or describes a degenerate shape (FR:Verify-Physical_Constraints). Body ids count
+  /// from 0 in the order of adding.
+  BodyId add_body(const BodyDef& def);
+
+  /// A time-dependent force and torque on a dynamic body, added to its constant ones.
+  void set_force_callback(BodyId body, ForceCallback callback);
+
+  /// Advances the space by dt [s] > 0. Throws NumericalError if a state becomes non-finite.
+  void step(double dt);
+
+  double time() const { return time_; }
+  std::size_t body_count() const { return names_.size(); }
+  const std::string& name(BodyId body) const { return names_[body]; }
+  BodyType type(BodyId body) const { return types_[body]; }
+  /// kg; infinite for static and kinematic bodies.
+  double mass(BodyId body) const;
+  /// kg·m² about the centre of mass; infinite for bodies that cannot rotate.
+  double moment(BodyId body) const;
+  /// Centre of mass, orientation in [0, 2π), velocities.
+  BodyState state(BodyId body) const;
+  const Settings& settings() const { return settings_; }
+
+  /// The stages a step runs for this space, with their SRS ids.
+  std::vector<PipelineStage> pipeline() const;
+
+  /// The impacts resolved at their time of impact during the last step.
+  const std::vector<Impact>& impacts() const { return impacts_; }
+
+ private:
+  /// Advances by h, or by less when an impact comes first; returns the time advanced [s].
+  double substep(double h);
+  void move_kinematic(double h);
+  /// Adds the share of the contact impulses' velocity change that moves bodies within the step.
+  void apply_impulse_displacement(double h);
+
+  Settings settings_;
+  double time_ = 0.0;
+  std::vector<std::string> names_;
+  std::vector<BodyType> types_;
+  std::vector<char> dynamic_;
+  std::vector<BodyId> kinematic_;
+  bool collides_ = false;  // two shapes of different bodies, one of them dynamic
+  std::size_t bodies_with_shapes_ = 0;
+  BodyInertia inertia_;
+  MotionState state_;
+  ForceModel forces_;
+  std::unique_ptr<Integrator> integrator_;
+  BodyShapes shapes_;
+  CollisionDetection detection_;
+  ImpactSearch impact_search_;
+  std::vector<Impact> impacts_;
+  int impacts_this_step_ = 0;
+  double previous_h_ = 0.0;
+  // Scratch kept between steps so that a step does not allocate once the scene is warmed up.
+  MotionState start_, ballistic_end_, trial_;
+  Accelerations start_acceleration_;
+  std::vector<WorldShape> world_start_, world_end_;
+  std::vector<Contact> contacts_, previous_contacts_;
+  std::vector<ProxyPair> contact_pairs_;
+};
+
+}  // namespace gp

@@ -1,0 +1,167 @@
+// Sweep-and-prune broadphase against all-pairs testing (FR:Determine-Collisions).
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "engine/collision/broadphase.hpp"
+
+using gp::Aabb;
+using gp::BroadphaseProxy;
+using gp::ProxyPair;
+using gp::Vec2;
+
+namespace {
+
+/// Every pair the broadphase should report, by testing all N² / 2 pairs.
+std::vector<ProxyPair> all_overlapping_pairs(const std::vector<BroadphaseProxy>& proxies,
+                                             double margin) {
+  std::vector<ProxyPair> pairs;
+  for (std::size_t i = 0; i < proxies.size(); ++i) {
+    for (std::size_t j = i + 1; j < proxies.size(); ++j) {
+      if (proxies[i].is_static && proxies[j].is_static) continue;
+      if (proxies[i]
+              .bounds.fattened(0.5 * margin)
+              .overlaps(proxies[j].bounds.fattened(0.5 * margin))) {
+        pairs.push_back(
+            {std::min(proxies[i].id, proxies[j].id), std::max(proxies[i].id, proxies[j].id)});
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+std::vector<ProxyPair> sorted(std::vector<ProxyPair> pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+BroadphaseProxy box_proxy(std::uint32_t id, const Vec2& center, const Vec2& size, bool is_static) {
+  return {id, Aabb{center - 0.5 * size, center + 0.5 * size}, is_static};
+}
+
+}  // namespace
+
+TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 random boxes",
+          "[FR:Determine-Collisions]") {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> position(0.0, 100.0);
+  std::uniform_real_distribution<double> size(0.1, 4.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<BroadphaseProxy> proxies;
+  for (std::uint32_t id = 0; id < 1000; ++id) {
+    proxies.push_back(box_proxy(id * 3 + 11, {position(random), position(random)},
+                                {size(random), size(random)}, unit(random) < 0.2));
+  }
+  const double margin = 0.1;
+  gp::SweepAndPrune broadphase(margin);
+
+  const std::vector<ProxyPair> first = sorted(broadphase.find_pairs(proxies));
+  const std::vector<ProxyPair> expected = all_overlapping_pairs(proxies, margin);
+  CHECK(expected.size() > 100);  // the scene does have overlaps to find
+  CHECK(first == expected);
+  CHECK(std::adjacent_find(first.begin(), first.end()) == first.end());  // each pair once
+
+  SECTION("after a small move") {
+    std::normal_distribution<double> jiggle(0.0, 0.05);
+    for (BroadphaseProxy& proxy : proxies) {
+      if (proxy.is_static) continue;
+      const Vec2 move(jiggle(random), jiggle(random));
+      proxy.bounds = {proxy.bounds.min + move, proxy.bounds.max + move};
+    }
+    CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, margin));
+  }
+  SECTION("after the proxies were given in another order") {
+    std::shuffle(proxies.begin(), proxies.end(), random);
+    CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, margin));
+  }
+  SECTION("after proxies were removed") {
+    proxies.resize(600);
+    CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, margin));
+  }
+}
+
+TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Collisions]") {
+  // All boxes share one x interval, so a sweep along x alone would compare every pair.
+  std::vector<BroadphaseProxy> proxies{box_proxy(0, {0.0, -0.5}, {20.0, 1.0}, true)};
+  for (std::uint32_t level = 0; level < 200; ++level) {
+    proxies.push_back(box_proxy(level + 1, {0.01 * (level % 3), 0.5 + level}, {1.0, 1.0}, false));
+  }
+  gp::SweepAndPrune broadphase(0.0);
+  const std::vector<ProxyPair> pairs = sorted(broadphase.find_pairs(proxies));
+  CHECK(broadphase.candidates_tested() < 4 * proxies.size());
+  CHECK(pairs.size() == 200);  // each box touches the one below it (touching counts)
+  CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
+}
+
+TEST_CASE("Sweep and prune compares a few candidates per box in a scene spread both ways",
+          "[FR:Determine-Collisions]") {
+  // 40 000 unit boxes at random in a square 400 m wide: a sweep along x alone would compare each
+  // with the √N / 2 = 100 boxes sharing its x interval.
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> position(0.0, 400.0);
+  std::vector<BroadphaseProxy> proxies;
+  for (std::uint32_t id = 0; id < 40000; ++id) {
+    proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
+  }
+  gp::SweepAndPrune broadphase(0.05);
+  const std::size_t pairs = broadphase.find_pairs(proxies).size();
+  CHECK(pairs > 0);
+  CHECK(broadphase.candidates_tested() < 8 * proxies.size());
+}
+
+TEST_CASE("A huge box makes no more band entries than there are boxes",
+          "[FR:Determine-Collisions]") {
+  std::vector<BroadphaseProxy> proxies{box_proxy(0, {0.0, 0.0}, {1e9, 1e9}, true)};
+  for (std::uint32_t id = 1; id <= 100; ++id) {
+    proxies.push_back(box_proxy(id, {1.5 * id, 2.0 * (id % 7)}, {1.0, 1.0}, false));
+  }
+  gp::SweepAndPrune broadphase(0.0);
+  const std::vector<ProxyPair> pairs = sorted(broadphase.find_pairs(proxies));
+  CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
+  CHECK(broadphase.candidates_tested() < 2 * proxies.size());
+}
+
+TEST_CASE("Two static proxies are never paired", "[FR:Determine-Collisions]") {
+  std::vector<BroadphaseProxy> proxies;
+  for (std::uint32_t id = 0; id < 50; ++id) {
+    proxies.push_back(box_proxy(id, {0.1 * id, 0.0}, {2.0, 2.0}, id % 2 == 0));
+  }
+  gp::SweepAndPrune broadphase(0.0);
+  const std::vector<ProxyPair>& pairs = broadphase.find_pairs(proxies);
+  CHECK_FALSE(pairs.empty());
+  for (const ProxyPair& pair : pairs) {
+    CHECK_FALSE((proxies[pair.first].is_static && proxies[pair.second].is_static));
+  }
+  for (BroadphaseProxy& proxy : proxies) proxy.is_static = true;
+  CHECK(broadphase.find_pairs(proxies).empty());
+}
+
+TEST_CASE("Boxes apart by up to the margin are paired", "[FR:Determine-Collisions]") {
+  const std::vector<BroadphaseProxy> proxies{box_proxy(1, {0.0, 0.0}, {1.0, 1.0}, false),
+                                             box_proxy(2, {1.09, 0.3}, {1.0, 1.0}, false)};
+  gp::SweepAndPrune wide(0.1);
+  REQUIRE(wide.find_pairs(proxies).size() == 1);
+  CHECK(wide.find_pairs(proxies)[0] == ProxyPair{1, 2});
+  gp::SweepAndPrune narrow(0.08);
+  CHECK(narrow.find_pairs(proxies).empty());
+}
+
+TEST_CASE("A warmed-up sweep and prune reuses its pair buffer", "[FR:Determine-Collisions]") {
+  std::vector<BroadphaseProxy> proxies;
+  for (std::uint32_t id = 0; id < 100; ++id) {
+    proxies.push_back(box_proxy(id, {0.9 * id, 0.0}, {1.0, 1.0}, false));
+  }
+  gp::SweepAndPrune broadphase(0.0);
+  const std::vector<ProxyPair>& warm = broadphase.find_pairs(proxies);
+  const ProxyPair* buffer = warm.data();
+  const std::size_t capacity = warm.capacity();
+  for (BroadphaseProxy& proxy : proxies) proxy.bounds.min.y() += 0.01;
+  const std::vector<ProxyPair>& next = broadphase.find_pairs(proxies);
+  CHECK(next.size() == 99);
+  CHECK(next.data() == buffer);
+  CHECK(next.capacity() == capacity);
+}

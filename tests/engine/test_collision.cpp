@@ -1,0 +1,378 @@
+// Narrowphase contacts and signed distance between every pair of shape kinds
+// (FR:Determine-Collisions, A:collisionType, LC:Expanded-Collisions).
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "engine/collision/narrowphase.hpp"
+#include "engine/collision/signed_distance.hpp"
+
+using gp::ContactManifold;
+using gp::Shape;
+using gp::Vec2;
+using gp::WorldShape;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+WorldShape place(const Shape& shape, const Vec2& position, double angle = 0.0) {
+  return gp::to_world(shape, gp::Transform(position, angle));
+}
+
+void check_near(const Vec2& actual, const Vec2& expected, double tolerance = 1e-12) {
+  INFO("actual (" << actual.x() << ", " << actual.y() << "), expected (" << expected.x() << ", "
+                  << expected.y() << ")");
+  CHECK((actual - expected).norm() <= tolerance);
+}
+
+/// The manifold's point nearest to `position`.
+const gp::ContactPoint& point_near(const ContactManifold& manifold, const Vec2& position) {
+  REQUIRE(manifold.count > 0);
+  const auto* best = &manifold.points[0];
+  for (int i = 1; i < manifold.count; ++i) {
+    if ((manifold.points[i].position - position).norm() < (best->position - position).norm()) {
+      best = &manifold.points[i];
+    }
+  }
+  return *best;
+}
+
+double deepest(const ContactManifold& manifold) {
+  double depth = -INFINITY;
+  for (int i = 0; i < manifold.count; ++i) depth = std::max(depth, manifold.points[i].depth);
+  return depth;
+}
+
+/// collide(b, a) is collide(a, b) with the normal negated and the feature id halves swapped.
+void check_swap_symmetric(const WorldShape& a, const WorldShape& b, double margin) {
+  const ContactManifold ab = gp::collide(a, b, margin);
+  const ContactManifold ba = gp::collide(b, a, margin);
+  REQUIRE(ab.count == ba.count);
+  if (ab.count == 0) return;
+  check_near(ba.normal, -ab.normal);
+  for (int i = 0; i < ab.count; ++i) {
+    const gp::ContactPoint& p = ab.points[i];
+    const gp::ContactPoint& q = point_near(ba, p.position);
+    check_near(q.position, p.position);
+    CHECK(q.depth == Approx(p.depth).margin(1e-12));
+    CHECK(q.id.feature_a == p.id.feature_b);
+    CHECK(q.id.feature_b == p.id.feature_a);
+  }
+}
+
+const Shape kUnitBox = Shape::box(1.0, 1.0);
+const Shape kGround = Shape::box(10.0, 1.0);
+// Top face of the ground at y = 0.
+const WorldShape kGroundPlaced = place(kGround, {0.0, -0.5});
+
+}  // namespace
+
+TEST_CASE("Two unit circles 1.5 apart overlap by 0.5 along the line of centres",
+          "[FR:Determine-Collisions]") {
+  const WorldShape a = place(Shape::circle(1.0), {1.5, 0.0});
+  const WorldShape b = place(Shape::circle(1.0), {0.0, 0.0});
+  const ContactManifold manifold = gp::collide(a, b, 0.0);
+  REQUIRE(manifold.count == 1);
+  check_near(manifold.normal, {1.0, 0.0});  // from B towards A
+  CHECK(manifold.points[0].depth == Approx(0.5).epsilon(1e-14));
+  check_near(manifold.points[0].position, {0.75, 0.0});
+  CHECK(gp::signed_distance(a, b) == Approx(-0.5).epsilon(1e-14));
+}
+
+TEST_CASE("A box resting on a box touches at its two bottom corners",
+          "[FR:Determine-Collisions][LC:Expanded-Collisions]") {
+  const WorldShape box = place(kUnitBox, {0.2, 0.45});  // sunk 0.05 into the ground
+  const ContactManifold manifold = gp::collide(box, kGroundPlaced, 0.0);
+  REQUIRE(manifold.count == 2);
+  check_near(manifold.normal, {0.0, 1.0});
+  // Midway between the box's bottom (y = −0.05) and the ground's top (y = 0).
+  for (const Vec2& corner : {Vec2(-0.3, -0.025), Vec2(0.7, -0.025)}) {
+    const gp::ContactPoint& point = point_near(manifold, corner);
+    check_near(point.position, corner, 1e-12);
+    CHECK(point.depth == Approx(0.05).epsilon(1e-12));
+  }
+  CHECK(manifold.points[0].id.key() != manifold.points[1].id.key());
+  CHECK(gp::signed_distance(box, kGroundPlaced) == Approx(-0.05).epsilon(1e-12));
+}
+
+TEST_CASE("A tilted box's corner on the ground touches at one point",
+          "[FR:Determine-Collisions][A:collisionType]") {
+  // Turned 45°, its lowest corner is √2/2 below its centre: 0.1 into the ground.
+  const WorldShape box = place(kUnitBox, {0.3, std::sqrt(0.5) - 0.1}, kPi / 4);
+  const ContactManifold manifold = gp::collide(box, kGroundPlaced, 0.0);
+  REQUIRE(manifold.count == 1);
+  check_near(manifold.normal, {0.0, 1.0});
+  CHECK(manifold.points[0].depth == Approx(0.1).epsilon(1e-12));
+  check_near(manifold.points[0].position, {0.3, -0.05}, 1e-12);
+  check_swap_symmetric(box, kGroundPlaced, 0.0);
+}
+
+TEST_CASE("Swapping the shapes negates the normal for every pair of kinds",
+          "[FR:Determine-Collisions]") {
+  const std::vector<std::pair<std::string, WorldShape>> shapes{
+      {"circle", place(Shape::circle(0.6), {0.1, 0.2})},
+      {"box", place(Shape::box(1.2, 0.8), {-0.3, 0.1}, 0.3)},
+      {"triangle",
+       place(Shape::polygon(std::vector<Vec2>{{0, 0}, {1.5, 0.2}, {0.4, 1.1}}), {-0.2, -0.6}, 1.1)},
+      {"capsule", place(Shape::segment({-0.7, 0.0}, {0.8, 0.1}, 0.3), {0.2, -0.1}, 2.0)},
+      {"line", place(Shape::segment({-1.0, 0.3}, {1.1, -0.2}), {0.0, 0.4}, -0.4)},
+  };
+  int contacts = 0;
+  for (const auto& [name_a, a] : shapes) {
+    for (const auto& [name_b, b] : shapes) {
+      if (&a == &b) continue;
+      INFO(name_a << " against " << name_b);
+      check_swap_symmetric(a, b, 0.02);
+      const ContactManifold manifold = gp::collide(a, b, 0.02);
+      contacts += manifold.count > 0 ? 1 : 0;
+      if (manifold.count > 0) CHECK(manifold.normal.norm() == Approx(1.0).epsilon(1e-12));
+    }
+  }
+  CHECK(contacts == 20);  // placed so that every pair overlaps
+}
+
+TEST_CASE("A circle meets a polygon's face, its corner, or lies inside it",
+          "[FR:Determine-Collisions]") {
+  const WorldShape box = place(Shape::box(2.0, 2.0), {0.0, 0.0});
+  SECTION("on the face") {
+    const ContactManifold manifold = gp::collide(place(Shape::circle(0.5), {0.3, 1.4}), box, 0.0);
+    REQUIRE(manifold.count == 1);
+    check_near(manifold.normal, {0.0, 1.0});
+    CHECK(manifold.points[0].depth == Approx(0.1).epsilon(1e-12));
+    check_near(manifold.points[0].position, {0.3, 0.95});
+  }
+  SECTION("at the corner: the normal points from the corner to the centre") {
+    const ContactManifold manifold = gp::collide(box, place(Shape::circle(0.6), {1.3, 1.4}), 0.0);
+    REQUIRE(manifold.count == 1);
+    check_near(manifold.normal, {-0.6, -0.8});  // from the circle (B) towards the box (A)
+    CHECK(manifold.points[0].depth == Approx(0.1).epsilon(1e-12));
+  }
+  SECTION("centre inside: pushed out through the nearest face") {
+    const WorldShape circle = place(Shape::circle(0.5), {0.8, 0.1});
+    const ContactManifold manifold = gp::collide(circle, box, 0.0);
+    REQUIRE(manifold.count == 1);
+    check_near(manifold.normal, {1.0, 0.0});
+    CHECK(manifold.points[0].depth == Approx(0.7).epsilon(1e-12));
+    CHECK(gp::signed_distance(circle, box) == Approx(-0.7).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("A circle meets a segment along its side or beyond its end",
+          "[FR:Determine-Collisions]") {
+  const WorldShape capsule = place(Shape::segment({-1.0, 0.0}, {1.0, 0.0}, 0.1), {0.0, 0.0});
+  SECTION("side") {
+    const ContactManifold manifold =
+        gp::collide(place(Shape::circle(0.5), {0.2, 0.5}), capsule, 0.0);
+    REQUIRE(manifold.count == 1);
+    check_near(manifold.normal, {0.0, 1.0});
+    CHECK(manifold.points[0].depth == Approx(0.1).epsilon(1e-12));
+    check_near(manifold.points[0].position, {0.2, 0.05});
+  }
+  SECTION("beyond the end") {
+    const ContactManifold manifold =
+        gp::collide(place(Shape::circle(0.5), {1.4, 0.0}), capsule, 0.0);
+    REQUIRE(manifold.count == 1);
+    check_near(manifold.normal, {1.0, 0.0});
+    CHECK(manifold.points[0].depth == Approx(0.2).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("A capsule lying on a box touches at two points",
+          "[FR:Determine-Collisions][LC:Expanded-Collisions]") {
+  const WorldShape capsule = place(Shape::segment({-1.0, 0.0}, {1.0, 0.0}, 0.25), {0.0, 0.2});
+  const WorldShape box = place(Shape::box(4.0, 1.0), {0.0, -0.5});
+  const ContactManifold manifold = gp::collide(capsule, box, 0.0);
+  REQUIRE(manifold.count == 2);
+  check_near(manifold.normal, {0.0, 1.0});
+  for (const Vec2& expected : {Vec2(-1.0, -0.025), Vec2(1.0, -0.025)}) {
+    const gp::ContactPoint& point = point_near(manifold, expected);
+    check_near(point.position, expected, 1e-12);
+    CHECK(point.depth == Approx(0.05).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("A line poking into a box touches at its end", "[FR:Determine-Collisions]") {
+  const WorldShape line = place(Shape::segment({0.0, -0.2}, {0.0, 1.0}), {0.0, 0.0});
+  const WorldShape box = place(Shape::box(2.0, 2.0), {0.0, -1.0});
+  const ContactManifold manifold = gp::collide(line, box, 0.0);
+  REQUIRE(manifold.count == 1);
+  check_near(manifold.normal, {0.0, 1.0});
+  CHECK(manifold.points[0].depth == Approx(0.2).epsilon(1e-12));
+  check_near(manifold.points[0].position, {0.0, -0.1});
+}
+
+TEST_CASE("Segments: bare lines never touch, capsules do", "[FR:Determine-Collisions]") {
+  SECTION("crossing lines of radius 0 give no contact") {
+    const WorldShape a = place(Shape::segment({-1.0, -1.0}, {1.0, 1.0}), {0.0, 0.0});
+    const WorldShape b = place(Shape::segment({-1.0, 1.0}, {1.0, -1.0}), {0.0, 0.0});
+    CHECK(gp::collide(a, b, 0.1).count == 0);
+  }
+  SECTION("parallel capsules side by side touch at two points") {
+    const WorldShape a = place(Shape::segment({-1.0, 0.0}, {1.0, 0.0}, 0.2), {0.0, 0.3});
+    const WorldShape b = place(Shape::segment({-0.5, 0.0}, {2.0, 0.0}, 0.2), {0.0, 0.0});
+    const ContactManifold manifold = gp::collide(a, b, 0.0);
+    REQUIRE(manifold.count == 2);
+    check_near(manifold.normal, {0.0, 1.0});
+    for (const Vec2& expected : {Vec2(-0.5, 0.15), Vec2(1.0, 0.15)}) {
+      CHECK(point_near(manifold, expected).depth == Approx(0.1).epsilon(1e-12));
+      check_near(point_near(manifold, expected).position, expected);
+    }
+  }
+  SECTION("capsules end to end on one line touch along the line") {
+    const WorldShape a = place(Shape::segment({1.3, 0.0}, {3.0, 0.0}, 0.2), {0.0, 0.0});
+    const WorldShape b = place(Shape::segment({-1.0, 0.0}, {1.0, 0.0}, 0.2), {0.0, 0.0});
+    const ContactManifold manifold = gp::collide(a, b, 0.0);
+    REQUIRE(manifold.count == 1);
+    check_near(manifold.normal, {1.0, 0.0});
+    CHECK(manifold.points[0].depth == Approx(0.1).epsilon(1e-12));
+    check_near(manifold.points[0].position, {1.15, 0.0});
+    CHECK(gp::signed_distance(a, b) == Approx(-0.1).epsilon(1e-12));
+  }
+  SECTION("crossing capsules are pushed apart along a segment's normal") {
+    const WorldShape a = place(Shape::segment({-1.0, -1.0}, {1.0, 1.0}, 0.1), {0.0, 0.0});
+    const WorldShape b = place(Shape::segment({-1.0, 1.0}, {1.0, -1.0}, 0.1), {0.0, 0.0});
+    const ContactManifold manifold = gp::collide(a, b, 0.0);
+    REQUIRE(manifold.count >= 1);
+    CHECK(std::abs(manifold.normal.x()) == Approx(std::sqrt(0.5)).epsilon(1e-12));
+    CHECK(deepest(manifold) == Approx(std::sqrt(2.0) + 0.2).epsilon(1e-12));
+    CHECK(gp::signed_distance(a, b) == Approx(-std::sqrt(2.0) - 0.2).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("Shapes apart by less than the margin give speculative points of negative depth",
+          "[FR:Determine-Collisions]") {
+  const WorldShape box = place(kUnitBox, {0.0, 0.52});  // 0.02 above the ground
+  const ContactManifold near = gp::collide(box, kGroundPlaced, 0.05);
+  REQUIRE(near.count == 2);
+  CHECK(near.points[0].depth == Approx(-0.02).epsilon(1e-12));
+  CHECK(near.points[1].depth == Approx(-0.02).epsilon(1e-12));
+  CHECK(gp::collide(box, kGroundPlaced, 0.01).count == 0);
+
+  const WorldShape a = place(Shape::circle(1.0), {2.1, 0.0});
+  const WorldShape b = place(Shape::circle(1.0), {0.0, 0.0});
+  REQUIRE(gp::collide(a, b, 0.2).count == 1);
+  CHECK(gp::collide(a, b, 0.2).points[0].depth == Approx(-0.1).epsilon(1e-12));
+  CHECK(gp::collide(a, b, 0.05).count == 0);
+}
+
+TEST_CASE("Feature ids stay the same while the same features touch", "[FR:Determine-Collisions]") {
+  const ContactManifold before = gp::collide(place(kUnitBox, {0.2, 0.45}), kGroundPlaced, 0.0);
+  const ContactManifold after =
+      gp::collide(place(kUnitBox, {0.21, 0.449}, 0.001), kGroundPlaced, 0.0);
+  REQUIRE(before.count == 2);
+  REQUIRE(after.count == 2);
+  for (int i = 0; i < before.count; ++i) {
+    const gp::ContactPoint& moved = point_near(after, before.points[i].position);
+    CHECK(moved.id == before.points[i].id);
+    CHECK((moved.position - before.points[i].position).norm() < 0.02);
+  }
+}
+
+TEST_CASE("Signed distance is the gap between shapes apart and minus the depth of overlap",
+          "[FR:Determine-Collisions]") {
+  SECTION("boxes apart corner to corner") {
+    CHECK(gp::signed_distance(place(kUnitBox, {2.0, 2.0}), place(kUnitBox, {0.0, 0.0})) ==
+          Approx(std::sqrt(2.0)).epsilon(1e-12));
+  }
+  SECTION("box apart from a circle, nearest at a corner") {
+    CHECK(gp::signed_distance(place(kUnitBox, {0.0, 0.0}), place(Shape::circle(0.5), {3.5, 4.5})) ==
+          Approx(4.5).epsilon(1e-12));
+  }
+  SECTION("circles apart") {
+    CHECK(gp::signed_distance(place(Shape::circle(1.0), {3.0, 0.0}),
+                              place(Shape::circle(1.0), {0.0, 0.0})) == Approx(1.0));
+  }
+  SECTION("parallel lines apart") {
+    CHECK(gp::signed_distance(place(Shape::segment({0, 0}, {1, 0}), {0.0, 0.3}),
+                              place(Shape::segment({3, 0}, {4, 0}), {0.0, 0.0})) ==
+          Approx(std::hypot(2.0, 0.3)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("Signed distance changes no faster than a shape moves and crosses zero on contact",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Shape> shapes{Shape::circle(0.5), Shape::box(1.0, 0.6),
+                                  Shape::segment({-0.6, 0.0}, {0.6, 0.1}, 0.2),
+                                  Shape::segment({-0.6, 0.0}, {0.6, 0.1})};
+  const double step = 0.01;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      INFO("shapes " << i << " and " << j);
+      const WorldShape a = place(shapes[i], {0.0, 0.0}, 0.4);
+      double previous = gp::signed_distance(a, place(shapes[j], {-3.0, 0.25}, -0.7));
+      double lowest = previous;
+      for (int k = 1; k <= 600; ++k) {
+        const WorldShape b = place(shapes[j], {-3.0 + k * step, 0.25}, -0.7);
+        const double distance = gp::signed_distance(a, b);
+        CHECK(std::abs(distance - previous) <= step * (1.0 + 1e-9));
+        CHECK(distance == Approx(gp::signed_distance(b, a)).margin(1e-12));
+        lowest = std::min(lowest, distance);
+        previous = distance;
+      }
+      CHECK(previous > 0.0);
+      CHECK(lowest <= 0.0);
+    }
+  }
+}
+
+TEST_CASE("Contacts agree with the signed distance for random pairs of shapes",
+          "[FR:Determine-Collisions]") {
+  std::mt19937 random(20240611);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto random_shape = [&]() {
+    switch (static_cast<int>(unit(random) * 5.0)) {
+      case 0:
+        return Shape::circle(0.2 + 0.8 * unit(random));
+      case 1:
+        return Shape::box(0.3 + 1.7 * unit(random), 0.3 + 1.7 * unit(random));
+      case 2: {
+        // Points on an ellipse, in angle order, are in convex position.
+        const int count = 3 + static_cast<int>(unit(random) * 6.0);
+        const double stretch = 0.4 + unit(random);
+        std::vector<Vec2> vertices;
+        for (int k = 0; k < count; ++k) {
+          const double angle = (k + 0.6 * (unit(random) - 0.5)) * 2.0 * kPi / count;
+          vertices.emplace_back(stretch * std::cos(angle), std::sin(angle));
+        }
+        return Shape::polygon(vertices);
+      }
+      case 3:
+        return Shape::segment({-0.5 - unit(random), 0.0}, {0.5 + unit(random), 0.2 * unit(random)},
+                              0.05 + 0.45 * unit(random));
+      default:
+        return Shape::segment({-0.5 - unit(random), 0.0}, {0.5 + unit(random), 0.0});
+    }
+  };
+  const double margin = 0.05;
+  int overlapping = 0;
+  for (int trial = 0; trial < 5000; ++trial) {
+    const WorldShape a = place(random_shape(), {0.0, 0.0}, 2.0 * kPi * unit(random));
+    const WorldShape b = place(random_shape(), {4.0 * unit(random) - 2.0, 4.0 * unit(random) - 2.0},
+                               2.0 * kPi * unit(random));
+    const bool two_lines = a.kind() == gp::ShapeKind::kSegment &&
+                           b.kind() == gp::ShapeKind::kSegment &&
+                           std::get<gp::Segment>(a.geometry).radius == 0.0 &&
+                           std::get<gp::Segment>(b.geometry).radius == 0.0;
+    if (two_lines) continue;
+    const double distance = gp::signed_distance(a, b);
+    const ContactManifold manifold = gp::collide(a, b, margin);
+    INFO("trial " << trial << ", kinds " << static_cast<int>(a.kind()) << " and "
+                  << static_cast<int>(b.kind()) << ", signed distance " << distance);
+    if (distance > margin + 1e-9) CHECK(manifold.count == 0);
+    if (distance < -1e-9) {
+      ++overlapping;
+      REQUIRE(manifold.count >= 1);
+      CHECK(manifold.normal.norm() == Approx(1.0).epsilon(1e-12));
+      // The reference face may be A's while B's separates by up to kContactTolerance more.
+      CHECK(deepest(manifold) == Approx(-distance).margin(gp::kContactTolerance + 1e-9));
+    }
+  }
+  CHECK(overlapping > 1000);
+}

@@ -1,0 +1,228 @@
+// Shapes, their validation, mass properties and placement in the world (FR:Determine-Collisions).
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "engine/geometry/mass_properties.hpp"
+#include "engine/geometry/world_shape.hpp"
+
+using gp::Shape;
+using gp::Vec2;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+void check_near(const Vec2& actual, const Vec2& expected, double tolerance = 1e-12) {
+  INFO("actual (" << actual.x() << ", " << actual.y() << "), expected (" << expected.x() << ", "
+                  << expected.y() << ")");
+  CHECK((actual - expected).norm() <= tolerance);
+}
+
+gp::ConvexPolygon polygon_of(const Shape& shape) {
+  return std::get<gp::ConvexPolygon>(shape.geometry());
+}
+
+}  // namespace
+
+TEST_CASE("A unit square has area 1, centroid at its centre and polar moment 1/6",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const gp::MassProperties mass = gp::mass_properties(Shape::polygon(square));
+  CHECK(mass.area == Approx(1.0).epsilon(1e-14));
+  check_near(mass.centroid, {0.5, 0.5});
+  // ∫(x² + y²) over [−½, ½]²  = 2 · (1/12).
+  CHECK(mass.polar_moment == Approx(1.0 / 6.0).epsilon(1e-14));
+}
+
+TEST_CASE("A box w × h at an offset has area w h and polar moment w h (w² + h²) / 12",
+          "[FR:Determine-Collisions]") {
+  const gp::MassProperties mass = gp::mass_properties(Shape::box(2.0, 3.0, {1.0, -2.0}));
+  CHECK(mass.area == Approx(6.0).epsilon(1e-14));
+  check_near(mass.centroid, {1.0, -2.0});
+  CHECK(mass.polar_moment == Approx(6.0 * 13.0 / 12.0).epsilon(1e-14));
+}
+
+TEST_CASE("A triangle's polar moment about its centroid is A (a² + b² + c²) / 36",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Vec2> right_triangle{{0, 0}, {3, 0}, {0, 4}};  // sides 3, 4, 5
+  const gp::MassProperties mass = gp::mass_properties(Shape::polygon(right_triangle));
+  CHECK(mass.area == Approx(6.0).epsilon(1e-14));
+  check_near(mass.centroid, {1.0, 4.0 / 3.0});
+  CHECK(mass.polar_moment == Approx(6.0 * (9.0 + 16.0 + 25.0) / 36.0).epsilon(1e-14));
+}
+
+TEST_CASE("A regular hexagon far from the origin has area 3√3/2 a² and polar moment 5√3/8 a⁴",
+          "[FR:Determine-Collisions]") {
+  const double side = 0.7;
+  const Vec2 center(300.0, -400.0);
+  std::vector<Vec2> hexagon;
+  for (int k = 0; k < 6; ++k) {
+    hexagon.push_back(center + side * Vec2(std::cos(k * kPi / 3), std::sin(k * kPi / 3)));
+  }
+  const gp::MassProperties mass = gp::mass_properties(Shape::polygon(hexagon));
+  CHECK(mass.area == Approx(1.5 * std::sqrt(3.0) * side * side).epsilon(1e-12));
+  check_near(mass.centroid, center, 1e-10);
+  CHECK(mass.polar_moment == Approx(5.0 * std::sqrt(3.0) / 8.0 * std::pow(side, 4)).epsilon(1e-9));
+}
+
+TEST_CASE("A circle has area π r² and polar moment π r⁴ / 2 about its centre",
+          "[FR:Determine-Collisions]") {
+  const gp::MassProperties mass = gp::mass_properties(Shape::circle(2.0, {1.0, -1.0}));
+  CHECK(mass.area == Approx(4.0 * kPi).epsilon(1e-14));
+  check_near(mass.centroid, {1.0, -1.0});
+  CHECK(mass.polar_moment == Approx(8.0 * kPi).epsilon(1e-14));
+}
+
+TEST_CASE("A capsule's closed-form mass properties match integrating over its area",
+          "[FR:Determine-Collisions]") {
+  const double radius = 0.5;
+  const Vec2 a(-1.0, 0.0);
+  const Vec2 b(1.0, 0.0);
+  const gp::MassProperties mass = gp::mass_properties(Shape::segment(a, b, radius));
+
+  // Midpoint rule over the bounding box, a point counting when it is within `radius` of the core.
+  const double step = 1e-3;
+  double area = 0.0;
+  double polar = 0.0;
+  for (double x = -1.5 + 0.5 * step; x < 1.5; x += step) {
+    for (double y = -0.5 + 0.5 * step; y < 0.5; y += step) {
+      const double along = std::clamp(x, -1.0, 1.0);
+      if (std::hypot(x - along, y) <= radius) {
+        area += step * step;
+        polar += (x * x + y * y) * step * step;
+      }
+    }
+  }
+  CHECK(mass.area == Approx(2.0 * radius * 2.0 + kPi * radius * radius).epsilon(1e-14));
+  CHECK(mass.area == Approx(area).epsilon(1e-4));
+  check_near(mass.centroid, {0.0, 0.0});
+  CHECK(mass.polar_moment == Approx(polar).epsilon(1e-4));
+}
+
+TEST_CASE("A segment of radius 0 has no area and no polar moment, and its midpoint as centroid",
+          "[FR:Determine-Collisions]") {
+  const gp::MassProperties mass = gp::mass_properties(Shape::segment({1.0, 2.0}, {3.0, 6.0}));
+  CHECK(mass.area == 0.0);
+  CHECK(mass.polar_moment == 0.0);
+  check_near(mass.centroid, {2.0, 4.0});
+}
+
+TEST_CASE("A clockwise polygon is reordered counter-clockwise with outward unit normals",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Vec2> clockwise{{0, 0}, {0, 2}, {1, 2}, {1, 0}};
+  const gp::ConvexPolygon polygon = polygon_of(Shape::polygon(clockwise));
+  REQUIRE(polygon.count == 4);
+  double twice_area = 0.0;
+  for (int i = 0; i < polygon.count; ++i) {
+    const Vec2& start = polygon.vertices[i];
+    const Vec2& end = polygon.vertices[(i + 1) % polygon.count];
+    twice_area += gp::cross(start, end);
+    CHECK(polygon.normals[i].norm() == Approx(1.0).epsilon(1e-15));
+    CHECK(std::abs(polygon.normals[i].dot(end - start)) <= 1e-15);
+    for (int k = 0; k < polygon.count; ++k)
+      CHECK(polygon.normals[i].dot(polygon.vertices[k] - start) <= 1e-15);
+  }
+  CHECK(twice_area == Approx(4.0));
+  for (const Vec2& v : clockwise) {
+    bool kept = false;
+    for (int i = 0; i < polygon.count; ++i) kept = kept || polygon.vertices[i] == v;
+    CHECK(kept);
+  }
+}
+
+TEST_CASE("Repeated consecutive vertices of a polygon are merged", "[FR:Determine-Collisions]") {
+  const std::vector<Vec2> repeated{{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+  CHECK(polygon_of(Shape::polygon(repeated)).count == 4);
+}
+
+TEST_CASE("Polygons breaking a rule are rejected with the rule and the value",
+          "[FR:Determine-Collisions]") {
+  const auto rejects = [](const std::vector<Vec2>& vertices, const std::string& message) {
+    INFO(message);
+    CHECK_THROWS_AS(Shape::polygon(vertices), std::invalid_argument);
+    CHECK_THROWS_WITH(Shape::polygon(vertices), Catch::Contains(message));
+  };
+  SECTION("non-convex") {
+    rejects({{0, 0}, {2, 0}, {2, 2}, {1, 0.5}, {0, 2}},
+            "strictly convex (no reflex or straight corner): vertex (1, 0.5) is not");
+  }
+  SECTION("self-intersecting star, whose turns all bend the same way") {
+    std::vector<Vec2> star;
+    for (int k = 0; k < 5; ++k)
+      star.emplace_back(std::cos(k * 4 * kPi / 5), std::sin(k * 4 * kPi / 5));
+    rejects(star, "must not intersect itself");
+  }
+  SECTION("a vertex in the middle of an edge") {
+    rejects({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}},
+            "strictly convex (no reflex or straight corner): vertex (1, 0) is not");
+  }
+  SECTION("collinear") {
+    rejects({{0, 0}, {1, 1}, {3, 3}}, "area must be > 0");
+  }
+  SECTION("fewer than 3 distinct vertices") {
+    rejects({{0, 0}, {1, 1}, {1, 1}, {0, 0}}, "at least 3 distinct vertices, got 2");
+  }
+  SECTION("more vertices than the fixed capacity") {
+    std::vector<Vec2> nonagon;
+    for (int k = 0; k < 9; ++k)
+      nonagon.emplace_back(std::cos(k * 2 * kPi / 9), std::sin(k * 2 * kPi / 9));
+    rejects(nonagon, "at most 8 vertices, got 9");
+  }
+  SECTION("not finite") {
+    rejects({{0, 0}, {1, 0}, {std::nan(""), 1}}, "polygon vertex 2 must be finite, got (nan, 1)");
+  }
+}
+
+TEST_CASE("Circles, boxes and segments breaking a rule are rejected with the rule and the value",
+          "[FR:Determine-Collisions]") {
+  CHECK_THROWS_AS(Shape::circle(0.0), std::invalid_argument);
+  CHECK_THROWS_WITH(Shape::circle(-1.0), Catch::Contains("radius must be finite and > 0, got -1"));
+  CHECK_THROWS_WITH(Shape::circle(INFINITY), Catch::Contains("got inf"));
+  CHECK_THROWS_WITH(Shape::circle(1.0, {NAN, 0.0}),
+                    Catch::Contains("circle centre must be finite"));
+  CHECK_THROWS_WITH(Shape::box(0.0, 1.0),
+                    Catch::Contains("box width must be finite and > 0, got 0"));
+  CHECK_THROWS_WITH(Shape::box(1.0, -2.0),
+                    Catch::Contains("box height must be finite and > 0, got -2"));
+  CHECK_THROWS_WITH(Shape::segment({0, 0}, {1, 0}, -0.1),
+                    Catch::Contains("segment radius must be finite and >= 0, got -0.1"));
+  CHECK_THROWS_WITH(Shape::segment({1, 2}, {1, 2}, 0.5), Catch::Contains("ends must be distinct"));
+  CHECK_NOTHROW(Shape::segment({0, 0}, {1, 0}, 0.0));
+}
+
+TEST_CASE("A shape placed by a transform has its vertices, normals and bounds moved with it",
+          "[FR:Determine-Collisions]") {
+  const gp::Transform quarter_turn({3.0, 4.0}, kPi / 2);
+  SECTION("box") {
+    const gp::WorldShape box = gp::to_world(Shape::box(2.0, 1.0, {1.0, 0.0}), quarter_turn);
+    const auto& polygon = std::get<gp::ConvexPolygon>(box.geometry);
+    // Body corners (0, −½), (2, −½), (2, ½), (0, ½) turned a quarter: (x, y) → (−y, x).
+    check_near(polygon.vertices[0], {3.5, 4.0});
+    check_near(polygon.vertices[1], {3.5, 6.0});
+    check_near(polygon.vertices[2], {2.5, 6.0});
+    check_near(polygon.vertices[3], {2.5, 4.0});
+    check_near(polygon.normals[0], {1.0, 0.0});
+    check_near(polygon.normals[1], {0.0, 1.0});
+    check_near(box.bounds.min, {2.5, 4.0});
+    check_near(box.bounds.max, {3.5, 6.0});
+    CHECK(box.kind() == gp::ShapeKind::kPolygon);
+  }
+  SECTION("circle") {
+    const gp::WorldShape circle = gp::to_world(Shape::circle(0.5, {1.0, 0.0}), quarter_turn);
+    check_near(std::get<gp::Circle>(circle.geometry).center, {3.0, 5.0});
+    check_near(circle.bounds.min, {2.5, 4.5});
+    check_near(circle.bounds.max, {3.5, 5.5});
+  }
+  SECTION("capsule") {
+    const gp::WorldShape capsule =
+        gp::to_world(Shape::segment({0.0, 0.0}, {2.0, 0.0}, 0.25), quarter_turn);
+    check_near(std::get<gp::Segment>(capsule.geometry).b, {3.0, 6.0});
+    check_near(capsule.bounds.min, {2.75, 3.75});
+    check_near(capsule.bounds.max, {3.25, 6.25});
+  }
+}
