@@ -124,7 +124,9 @@ class RungeKutta4 final : public Integrator {
         stage.angular_velocity[j] = stage_state_.angular_velocity[j];
       }
     }
-    const auto weighted = [this](auto member, BodyId j) {
+    // The explicit return type evaluates Eigen's expression before the temporaries it refers to
+    // go out of scope.
+    const auto weighted = [this](auto member, BodyId j) -> decltype(member(stages_[0], j)) {
       return (member(stages_[0], j) + 2.0 * member(stages_[1], j) + 2.0 * member(stages_[2], j) +
               member(stages_[3], j)) /
              6.0;
@@ -151,7 +153,7 @@ class RungeKutta4 final : public Integrator {
     std::vector<double> angular_velocity;
     Accelerations acceleration;
     void resize(std::size_t n) {
-      velocity.resize(n);
+      velocity.resize(n, Vec2::Zero());
       angular_velocity.resize(n);
       acceleration.resize(n);
     }

@@ -8,6 +8,8 @@
 
 namespace gp {
 
+// Eigen vectors are not initialised on construction: every resize fills with zeros so that the
+// entries of bodies a stage does not write (static, kinematic) are defined.
 struct MotionState {
   std::vector<Vec2> position;            ///< m, centre of mass
   std::vector<double> angle;             ///< rad, in [0, 2π)
@@ -15,9 +17,9 @@ struct MotionState {
   std::vector<double> angular_velocity;  ///< rad/s
 
   void resize(std::size_t n) {
-    position.resize(n);
+    position.resize(n, Vec2::Zero());
     angle.resize(n);
-    velocity.resize(n);
+    velocity.resize(n, Vec2::Zero());
     angular_velocity.resize(n);
   }
 };
@@ -28,7 +30,7 @@ struct Accelerations {
   std::vector<double> angular;  ///< rad/s²
 
   void resize(std::size_t n) {
-    linear.resize(n);
+    linear.resize(n, Vec2::Zero());
     angular.resize(n);
   }
 };

@@ -1,0 +1,83 @@
+// A step runs only what the scene needs, and says so with SRS ids; runs are deterministic.
+#include <algorithm>
+#include <catch2/catch.hpp>
+
+#include "gamephysics/gamephysics.hpp"
+
+namespace {
+bool has(const std::vector<gp::PipelineStage>& stages, const std::string& name) {
+  return std::any_of(stages.begin(), stages.end(),
+                     [&](const gp::PipelineStage& s) { return s.name.rfind(name, 0) == 0; });
+}
+gp::BodyDef disc(const std::string& name, const gp::Vec2& position) {
+  gp::BodyDef def;
+  def.name = name;
+  def.position = position;
+  def.shapes.push_back({gp::Shape::circle(0.5), 0.5});
+  return def;
+}
+}  // namespace
+
+TEST_CASE("A free point mass under gravity runs no collision or rotation stage",
+          "[FR:Simulation-Space]") {
+  gp::Settings settings;
+  settings.gravity = {0.0, -9.81};
+  gp::Space space(settings);
+  gp::BodyDef point;
+  point.name = "p";
+  point.mass = 1.0;
+  space.add_body(point);
+  const auto stages = space.pipeline();
+  CHECK(has(stages, "uniform gravity"));
+  CHECK(has(stages, "translation: velocity_verlet"));
+  CHECK(has(stages, "collisions: skipped"));
+  CHECK_FALSE(has(stages, "rotation"));
+  CHECK_FALSE(has(stages, "pairwise gravitation"));
+  CHECK_FALSE(has(stages, "broadphase"));
+}
+
+TEST_CASE("Colliding discs and G bring in their stages with their SRS ids",
+          "[FR:Simulation-Space][FR:Determine-Collisions]") {
+  gp::Settings settings;
+  settings.G = 6.6743e-11;
+  gp::Space space(settings);
+  space.add_body(disc("a", {0, 0}));
+  space.add_body(disc("b", {3, 0}));
+  gp::BodyDef wall;
+  wall.name = "wall";
+  wall.type = gp::BodyType::Static;
+  wall.shapes.push_back({gp::Shape::segment({-5, -5}, {5, -5})});
+  space.add_body(wall);
+  const auto stages = space.pipeline();
+  CHECK(has(stages, "pairwise gravitation"));
+  CHECK(has(stages, "broadphase"));
+  CHECK(has(stages, "time of impact"));
+  CHECK(has(stages, "rotation"));
+  CHECK(has(stages, "static bodies"));
+  const auto gravitation = std::find_if(
+      stages.begin(), stages.end(), [](const auto& s) { return s.name == "pairwise gravitation"; });
+  CHECK(gravitation->srs_ids == "TM:UniversalGravLaw GD:accelGravity");
+}
+
+TEST_CASE("The same scene gives bit-identical states every run", "[FR:Simulation-Space]") {
+  const auto run = [] {
+    gp::Settings settings;
+    settings.gravity = {0.0, -9.81};
+    gp::Space space(settings);
+    for (int i = 0; i < 30; ++i) space.add_body(disc("d" + std::to_string(i), {0.3 * i, 1.2 * i}));
+    gp::BodyDef floor;
+    floor.name = "floor";
+    floor.type = gp::BodyType::Static;
+    floor.shapes.push_back({gp::Shape::segment({-20, -1}, {20, -1})});
+    space.add_body(floor);
+    for (int k = 0; k < 200; ++k) space.step(1.0 / 60);
+    std::vector<double> out;
+    for (gp::BodyId id = 0; id < space.body_count(); ++id) {
+      const auto s = space.state(id);
+      out.insert(out.end(), {s.position.x(), s.position.y(), s.angle, s.velocity.x(),
+                             s.velocity.y(), s.angular_velocity});
+    }
+    return out;
+  };
+  CHECK(run() == run());
+}
