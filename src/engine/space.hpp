@@ -56,6 +56,14 @@ class Space {
   /// The impacts resolved at their time of impact during the last step.
   const std::vector<Impact>& impacts() const { return impacts_; }
 
+  /// The space's own models, for a verifier that integrates the same equations another way
+  /// (the SUNDIALS oracle): the force model (IM:transMot, IM:rotMot right-hand sides), the shapes
+  /// centred on their bodies' centres of mass, the inverse masses and the state of every body.
+  const ForceModel& force_model() const { return forces_; }
+  const BodyShapes& shapes() const { return shapes_; }
+  const BodyInertia& inertia() const { return inertia_; }
+  const MotionState& motion_state() const { return state_; }
+
  private:
   /// Advances by h, or by less when an impact comes first; returns the time advanced [s].
   double substep(double h);
