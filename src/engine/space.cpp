@@ -161,7 +161,7 @@ double Space::substep(double h) {
   move_kinematic(h);
   if (!contacts_.empty()) {
     trial_ = state_;
-    set_targets(contacts_, start_, h, settings_);
+    prepare_contacts(contacts_, inertia_, start_, h, settings_);
     warm_start(contacts_, inertia_, state_);
     solve_velocities(contacts_, inertia_, settings_.velocity_iterations, state_);
     apply_impulse_displacement(h);

@@ -20,6 +20,8 @@ struct ContactPointState {
   double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
   double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
   double target_normal_velocity = 0.0;  ///< m/s, what the solver drives v_rel·n to at least
+  double normal_mass = 0.0;   ///< kg: impulse per unit change of v_rel·n (GD:impulse, C_R = 0)
+  double tangent_mass = 0.0;  ///< kg: the same along the tangent
 };
 
 struct Contact {

@@ -20,12 +20,13 @@ Vec2 tangent_of(const Vec2& normal) {
   return {-normal.y(), normal.x()};
 }
 
-// Impulse that brings v_rel·direction to `target`, with the effective mass of GD:impulse.
-double impulse_towards(const BodyInertia& m, const Contact& c, const ContactPointState& p,
-                       const Vec2& v_rel, const Vec2& direction, double target) {
-  return gd::collision_impulse(0.0, v_rel - target * direction, direction, m.inverse_mass[c.body_a],
+// Effective mass of the two bodies at a point along `direction` [kg]: GD:impulse with C_R = 0
+// gives, for a unit closing speed, exactly the impulse per unit change of speed.
+double effective_mass(const BodyInertia& m, const Contact& c, const Vec2& arm_a, const Vec2& arm_b,
+                      const Vec2& direction) {
+  return gd::collision_impulse(0.0, -direction, direction, m.inverse_mass[c.body_a],
                                m.inverse_mass[c.body_b], m.inverse_moment[c.body_a],
-                               m.inverse_moment[c.body_b], p.arm_a, p.arm_b);
+                               m.inverse_moment[c.body_b], arm_a, arm_b);
 }
 
 // Applies `impulse` to A at its arm and the reaction to B (DD:impulseV, DD:torque,
@@ -47,11 +48,13 @@ Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const Con
       dd::point_velocity(s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b));
 }
 
-void set_targets(std::vector<Contact>& contacts, const MotionState& before, double h,
-                 const Settings& settings) {
+void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
+                      const MotionState& before, double h, const Settings& settings) {
   for (Contact& c : contacts) {
     for (int k = 0; k < c.count; ++k) {
       ContactPointState& p = c.points[k];
+      p.normal_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, c.normal);
+      p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent_of(c.normal));
       const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
       const bool touching = p.depth > -settings.linear_slop;
@@ -82,14 +85,13 @@ void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia
         if (c.friction > 0.0) {
           // Friction first, so the normal constraint, solved last, is the one met exactly.
           const double limit = c.friction * p.normal_impulse;
-          const double change =
-              impulse_towards(inertia, c, p, contact_relative_velocity(s, c, p), tangent, 0.0);
+          const double change = -p.tangent_mass * contact_relative_velocity(s, c, p).dot(tangent);
           const double total = std::clamp(p.tangent_impulse + change, -limit, limit);
           apply(inertia, c, p, (total - p.tangent_impulse) * tangent, s);
           p.tangent_impulse = total;
         }
-        const double change = impulse_towards(inertia, c, p, contact_relative_velocity(s, c, p),
-                                              c.normal, p.target_normal_velocity);
+        const double change = p.normal_mass * (p.target_normal_velocity -
+                                               contact_relative_velocity(s, c, p).dot(c.normal));
         const double total = std::max(p.normal_impulse + change, 0.0);
         apply(inertia, c, p, (total - p.normal_impulse) * c.normal, s);
         p.normal_impulse = total;
@@ -113,21 +115,19 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
         const double separation = (anchor_a - anchor_b).dot(c.normal);
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
         if (excess == 0.0) continue;
-        ContactPointState arms = p;
-        arms.arm_a = anchor_a - s.position[c.body_a];
-        arms.arm_b = anchor_b - s.position[c.body_b];
+        const Vec2 arm_a = anchor_a - s.position[c.body_a];
+        const Vec2 arm_b = anchor_b - s.position[c.body_b];
         // The same effective mass as for impulses, applied to a displacement instead of a velocity.
-        const double push = impulse_towards(inertia, c, arms, excess * c.normal, c.normal, 0.0);
-        const Vec2 shift = push * c.normal;
+        const Vec2 shift = -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal;
         s.position[c.body_a] +=
             dd::velocity_change_from_impulse(shift, inertia.inverse_mass[c.body_a]);
         s.angle[c.body_a] = dd::rotated_orientation(
-            s.angle[c.body_a], dd::torque(arms.arm_a, shift) * inertia.inverse_moment[c.body_a]);
+            s.angle[c.body_a], dd::torque(arm_a, shift) * inertia.inverse_moment[c.body_a]);
         const Vec2 back = tm::reaction_force(shift);
         s.position[c.body_b] +=
             dd::velocity_change_from_impulse(back, inertia.inverse_mass[c.body_b]);
         s.angle[c.body_b] = dd::rotated_orientation(
-            s.angle[c.body_b], dd::torque(arms.arm_b, back) * inertia.inverse_moment[c.body_b]);
+            s.angle[c.body_b], dd::torque(arm_b, back) * inertia.inverse_moment[c.body_b]);
       }
     }
   }

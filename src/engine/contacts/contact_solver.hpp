@@ -23,11 +23,12 @@ struct BodyInertia {
 /// [m/s] (DD:chaslesThm, DD:reVeInColl).
 Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
 
-/// Sets each point's target normal velocity for a step of h [s]: −C_R v_n for touching points
-/// approaching faster than the restitution threshold (v_n measured in `before`, the state before
-/// the step's forces), the speed that just closes the gap for points still apart, else 0.
-void set_targets(std::vector<Contact>& contacts, const MotionState& before, double h,
-                 const Settings& settings);
+/// Prepares each point for a step of h [s]: its effective masses, and its target normal velocity:
+/// −C_R v_n for touching points approaching faster than the restitution threshold (v_n measured
+/// in `before`, the state before the step's forces), the speed that just closes the gap for points
+/// still apart, else 0.
+void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
+                      const MotionState& before, double h, const Settings& settings);
 
 /// Applies the carried-over impulses of every point to the velocities of `s`.
 void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s);

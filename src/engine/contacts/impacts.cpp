@@ -4,6 +4,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
@@ -165,13 +166,8 @@ void resolve_impacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shap
         {t, c.body_a, c.body_b, c.normal, c.points[0].arm_a + s.position[c.body_a], r.impulse});
     return;
   }
-  for (Contact& c : contacts) {
-    for (int k = 0; k < c.count; ++k) {
-      const double v = approach(c, c.points[k]);
-      c.points[k].target_normal_velocity =
-          v < -settings.restitution_threshold ? -c.restitution * v : 0.0;
-    }
-  }
+  // An impact takes no time: no gap to close, only the restitution targets.
+  prepare_contacts(contacts, inertia, s, std::numeric_limits<double>::infinity(), settings);
   // Enough passes for Gauss–Seidel to converge on a handful of simultaneous points.
   solve_velocities(contacts, inertia, 64, s);
   for (const Contact& c : contacts) {

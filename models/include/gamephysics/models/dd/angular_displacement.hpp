@@ -15,7 +15,9 @@ namespace gp::dd {
 /// @return ϕ(t) in [0, 2π) [rad]
 inline double rotated_orientation(double orientation, double angular_displacement) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
-  double phi = std::fmod(orientation + angular_displacement, two_pi);
+  double phi = orientation + angular_displacement;
+  if (phi >= 0.0 && phi < two_pi) return phi;  // the common case, without a division
+  phi = std::fmod(phi, two_pi);
   if (phi < 0.0) phi += two_pi;
   // fmod of a tiny negative number plus 2π rounds to 2π itself, which is outside the range.
   return phi >= two_pi ? 0.0 : phi;
