@@ -145,3 +145,14 @@ TEST_CASE("SRS: the input constraint on length L constrains a symbol no model us
     for (const auto& s : model(m.id).at("symbols")) CHECK(s.at("symbol") != "L");
   }
 }
+
+TEST_CASE("SRS: names and descriptions with slips", "[srs]") {
+  const auto& c = catalog();
+  CHECK(c.contains("FR:Verify-Physical_Constraints"));  // '_' among '-'
+  CHECK(c.contains("LC:Include-Dampening"));            // dampening, for damping
+  bool t_c = false;
+  for (const auto& s : model("IM:col2D").at("symbols")) {
+    t_c |= s.at("description") == "denotes the time at collision";
+  }
+  CHECK(t_c);  // rendered by the SRS as "is the denotes the time at collision"
+}
