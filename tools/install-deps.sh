@@ -12,6 +12,8 @@ packages=(
   nlohmann-json3-dev   # all JSON: catalogue, scenes
   libcli11-dev         # the command line
   libboost-dev         # Boost.Units for the dimensional audit
+  libchipmunk-dev libbox2d-dev libbenchmark-dev  # peer engines and benchmarks (verification/)
+  python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
 )
 
 missing=()

@@ -3,16 +3,69 @@
 // 0 success, 1 a check failed, 2 bad input.
 
 #include <filesystem>
+#include <optional>
+#include <string>
+
+#include "engine/scene/scene.hpp"
 
 namespace gp::cli {
 
-/// `gamephysics verify`: the main job. For now the SRS audit (catalogue, functions, tests,
-/// dimensional checks, errata, edges, traceability/ up to date).
-int verify(const std::filesystem::path& root);
+struct VerifyOptions {
+  std::filesystem::path root;  ///< the repository: srs/, scenes/, tests/, traceability/
+  std::filesystem::path out;   ///< the report folder
+  bool quick = false;          ///< short runs only (what ctest runs)
+};
+
+/// `gamephysics verify`: the main job. The SRS audit (catalogue, functions, tests, dimensional
+/// checks, errata, edges, traceability/ up to date), then the verification suite against the
+/// SUNDIALS oracle; writes the report into `out`.
+int verify(const VerifyOptions& options);
 
 /// `gamephysics trace`: writes the traceability files into `out`; with `check_only`, writes
 /// nothing and fails when the copy in `out` is stale. Either way fails when a traceability check
 /// fails.
 int trace(const std::filesystem::path& root, const std::filesystem::path& out, bool check_only);
+
+struct SimulateOptions {
+  std::filesystem::path scene;
+  std::optional<std::filesystem::path> out;  ///< the trajectory CSV to write
+  SceneOverrides overrides;
+  bool explain = false;  ///< print the pipeline of a step
+};
+
+/// `gamephysics simulate`: runs a scene file and writes its trajectory as CSV; with `explain`,
+/// prints the pipeline of a step first (and runs nothing without `out`). Exits 2 for bad input and
+/// 1 when the run fails (a non-finite state), writing no file either way.
+int simulate(const SimulateOptions& options);
+
+struct OracleCommandOptions {
+  std::filesystem::path scene;
+  std::filesystem::path out;                    ///< the trajectory CSV to write
+  std::optional<std::filesystem::path> events;  ///< the impact log CSV to write
+  SceneOverrides overrides;                     ///< duration and output_dt; dt is not used
+  std::string method = "cvode-adams";           ///< cvode-adams, cvode-bdf or arkode-erk
+  std::optional<double> rtol;                   ///< default: the oracle's
+  std::optional<double> atol;
+};
+
+/// `gamephysics oracle`: integrates a scene file with the SUNDIALS oracle (verification/oracle)
+/// and writes its trajectory as the CSV of `simulate`, and its impacts. Exits 2 for bad input or a
+/// scene outside the oracle's domain and 1 when the output cannot be written, writing no file
+/// either way.
+int oracle(const OracleCommandOptions& options);
+
+struct PeerOptions {
+  std::filesystem::path scene;
+  std::filesystem::path out;  ///< the trajectory CSV to write
+  std::string engine;         ///< chipmunk or box2d
+  SceneOverrides overrides;
+};
+
+/// `gamephysics peer`: a scene file run by Chipmunk2D or Box2D (verification/peers), written as
+/// the CSV of `simulate`.
+int peer(const PeerOptions& options);
+
+/// `gamephysics bench`: runs build/bin/gamephysics_bench (ours, Chipmunk2D, Box2D).
+int bench(bool quick);
 
 }  // namespace gp::cli

@@ -12,8 +12,13 @@ int main(int argc, char** argv) {
   // unless given.
   std::string root = GP_SOURCE_DIR;
 
-  auto* verify = app.add_subcommand("verify", "Run the verification suite (the SRS audit)");
+  gp::cli::VerifyOptions verification;
+  std::string report = "out/report";
+  auto* verify = app.add_subcommand(
+      "verify", "The main job: SRS audit, then every scene against the SUNDIALS oracle; report");
   verify->add_option("--root", root, "Repository root")->check(CLI::ExistingDirectory);
+  verify->add_option("--out", report, "Report folder (default out/report)");
+  verify->add_flag("--quick", verification.quick, "Short runs only (what ctest runs)");
 
   bool check_only = false;
   std::string out;
@@ -22,13 +27,66 @@ int main(int argc, char** argv) {
   trace->add_option("--out", out, "Where to write (default: ROOT/traceability)");
   trace->add_flag("--check", check_only, "Write nothing; fail if the files in --out are stale");
 
+  gp::cli::SimulateOptions simulation;
+  auto* simulate =
+      app.add_subcommand("simulate", "Run a scene file (docs/scene-format.md), write CSV");
+  simulate->add_option("scene", simulation.scene, "Scene file (JSON)")->required();
+  simulate->add_option("--out", simulation.out, "Trajectory CSV to write");
+  simulate->add_option("--integrator", simulation.overrides.integrator,
+                       "symplectic_euler, velocity_verlet or rk4 (overrides the file)");
+  simulate->add_option("--dt", simulation.overrides.dt, "Time step [s] (overrides the file)");
+  simulate->add_option("--duration", simulation.overrides.duration,
+                       "Simulated time [s] (overrides the file)");
+  simulate->add_option("--output-dt", simulation.overrides.output_dt,
+                       "Interval between output rows [s] (overrides the file)");
+  simulate->add_flag("--explain", simulation.explain,
+                     "Print the pipeline of a step (runs nothing unless --out is given)");
+
+  gp::cli::OracleCommandOptions oracle_run;
+  auto* oracle = app.add_subcommand(
+      "oracle", "Integrate a scene file with the SUNDIALS oracle, write CSV like simulate");
+  oracle->add_option("scene", oracle_run.scene, "Scene file (JSON)")->required();
+  oracle->add_option("--out", oracle_run.out, "Trajectory CSV to write")->required();
+  oracle->add_option("--events", oracle_run.events, "Impact log CSV to write");
+  oracle->add_option("--method", oracle_run.method,
+                     "cvode-adams (default), cvode-bdf or arkode-erk");
+  oracle->add_option("--rtol", oracle_run.rtol, "Relative tolerance, > 0 (default 1e-10)");
+  oracle->add_option("--atol", oracle_run.atol, "Absolute tolerance, > 0 (default 1e-10)");
+  oracle->add_option("--duration", oracle_run.overrides.duration,
+                     "Simulated time [s] (overrides the file)");
+  oracle->add_option("--output-dt", oracle_run.overrides.output_dt,
+                     "Interval between output rows [s] (overrides the file)");
+
+  gp::cli::PeerOptions peer_run;
+  auto* peer = app.add_subcommand("peer", "Run a scene file in Chipmunk2D or Box2D, write CSV");
+  peer->add_option("scene", peer_run.scene, "Scene file (JSON)")->required();
+  peer->add_option("--engine", peer_run.engine, "chipmunk or box2d")->required();
+  peer->add_option("--out", peer_run.out, "Trajectory CSV to write")->required();
+  peer->add_option("--dt", peer_run.overrides.dt, "Time step [s] (overrides the file)");
+  peer->add_option("--duration", peer_run.overrides.duration,
+                   "Simulated time [s] (overrides the file)");
+  peer->add_option("--output-dt", peer_run.overrides.output_dt,
+                   "Interval between output rows [s] (overrides the file)");
+
+  bool quick_bench = false;
+  auto* bench = app.add_subcommand("bench", "Benchmarks: ours, Chipmunk2D and Box2D, one run");
+  bench->add_flag("--quick", quick_bench, "Fewer repetitions");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   try {
-    if (*verify) return gp::cli::verify(root);
+    if (*verify) {
+      verification.root = root;
+      verification.out = report;
+      return gp::cli::verify(verification);
+    }
+    if (*peer) return gp::cli::peer(peer_run);
+    if (*bench) return gp::cli::bench(quick_bench);
+    if (*simulate) return gp::cli::simulate(simulation);
+    if (*oracle) return gp::cli::oracle(oracle_run);
     return gp::cli::trace(
         root,
         out.empty() ? std::filesystem::path(root) / "traceability" : std::filesystem::path(out),

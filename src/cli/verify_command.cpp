@@ -2,13 +2,45 @@
 
 #include "cli/commands.hpp"
 #include "verification/audit/srs_audit.hpp"
+#include "verification/suite/suite.hpp"
 
 namespace gp::cli {
 
-int verify(const std::filesystem::path& root) {
-  const auto audit = verification::run_srs_audit(root);
-  std::cout << verification::format_srs_audit(audit);
-  return audit.passed() ? 0 : 1;
+namespace {
+
+// The SRS audit as the first section of the report: one row per traceability problem, or one
+// passing row when there is none.
+std::vector<verification::Check> audit_rows(const verification::SrsAudit& audit) {
+  verification::CheckList list("SRS audit");
+  const auto& in = audit.inputs;
+  const std::string figures = std::to_string(in.catalog.all_ids().size()) + " items, " +
+                              std::to_string(in.registrations.size()) + " functions, " +
+                              std::to_string(in.tests.size()) + " test cases, " +
+                              std::to_string(in.errata.size()) + " errata";
+  list.check("traceability: every model has a function and a test, every difference an erratum",
+             "FR:Verify-Physical_Constraints", figures, "no problem",
+             audit.result.problems.empty());
+  for (const auto& p : audit.result.problems)
+    list.check("traceability", "", p, "no problem", false);
+  list.check("traceability/ is up to date", "", audit.stale.empty() ? "up to date" : "stale",
+             "matches a fresh render", audit.stale.empty());
+  return list.rows();
+}
+
+}  // namespace
+
+int verify(const VerifyOptions& options) {
+  const auto audit = verification::run_srs_audit(options.root);
+  std::cout << verification::format_srs_audit(audit) << "\n";
+  verification::SuiteOptions suite;
+  suite.root = options.root;
+  suite.out = options.out;
+  suite.quick = options.quick;
+  suite.progress = &std::cout;
+  std::cout << "Verification suite against the SUNDIALS oracle ("
+            << (options.quick ? "quick" : "full") << "):\n";
+  const bool passed = verification::run_suite(suite, audit_rows(audit));
+  return audit.passed() && passed ? 0 : 1;
 }
 
 }  // namespace gp::cli

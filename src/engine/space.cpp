@@ -141,8 +141,9 @@ double Space::substep(double h) {
     const auto& pairs = detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
     contact_pairs_.assign(pairs.begin(), pairs.end());
     if (impacts_this_step_ < settings_.max_impacts_per_step) {
-      const auto tau =
-          impact_search_.earliest(contact_pairs_, shapes_, motion, h, settings_.linear_slop);
+      const auto tau = impact_search_.earliest(
+          contact_pairs_, shapes_, world_start_, world_end_, motion, h, settings_.linear_slop,
+          settings_.restitution_threshold, settings_.contact_margin);
       if (tau && *tau < h) {
         h = *tau;
         impact_pairs = &impact_search_.touching();
@@ -153,7 +154,10 @@ double Space::substep(double h) {
         });
       }
     }
-    const double scale = previous_h_ > 0.0 ? h / previous_h_ : 0.0;
+    // Resting impulses grow with the step, so they carry over scaled by h / h_prev; never scaled
+    // up, because after a short sub-step (an impact) they hold what stopped the impact, which
+    // does not grow with the step.
+    const double scale = previous_h_ > 0.0 ? std::min(1.0, h / previous_h_) : 0.0;
     detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, previous_contacts_,
                              scale, contacts_);
   }
@@ -164,9 +168,10 @@ double Space::substep(double h) {
     prepare_contacts(contacts_, inertia_, start_, h, settings_);
     warm_start(contacts_, inertia_, state_);
     solve_velocities(contacts_, inertia_, settings_.velocity_iterations, state_);
+    apply_restitution(contacts_, inertia_, state_);
     apply_impulse_displacement(h);
     correct_positions(contacts_, inertia_, settings_.position_iterations, settings_.linear_slop,
-                      state_);
+                      state_, rotations_);
   }
   time_ += h;
   if (impact_pairs) {

@@ -95,6 +95,7 @@ class Space {
   std::vector<WorldShape> world_start_, world_end_;
   std::vector<Contact> contacts_, previous_contacts_;
   std::vector<ProxyPair> contact_pairs_;
+  std::vector<Transform> rotations_;
 };
 
 }  // namespace gp

@@ -20,6 +20,9 @@ struct ContactPointState {
   double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
   double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
   double target_normal_velocity = 0.0;  ///< m/s, what the solver drives v_rel·n to at least
+  /// m/s: v_rel·n before the step when the point was touching and approaching faster than the
+  /// restitution threshold (it then bounces with C_R), else 0.
+  double approach_velocity = 0.0;
   double normal_mass = 0.0;   ///< kg: impulse per unit change of v_rel·n (GD:impulse, C_R = 0)
   double tangent_mass = 0.0;  ///< kg: the same along the tangent
 };

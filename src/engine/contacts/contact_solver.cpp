@@ -57,9 +57,10 @@ void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia
       p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent_of(c.normal));
       const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
+      p.approach_velocity = 0.0;
       const bool touching = p.depth > -settings.linear_slop;
       if (touching && approach < -settings.restitution_threshold) {
-        p.target_normal_velocity = std::max(p.target_normal_velocity, -c.restitution * approach);
+        p.approach_velocity = approach;
       }
     }
   }
@@ -100,23 +101,41 @@ void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia
   }
 }
 
+void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s) {
+  for (Contact& c : contacts) {
+    if (c.restitution == 0.0) continue;
+    for (int k = 0; k < c.count; ++k) {
+      ContactPointState& p = c.points[k];
+      if (p.approach_velocity == 0.0 || p.normal_impulse == 0.0) continue;
+      const double v = contact_relative_velocity(s, c, p).dot(c.normal);
+      const double change = -p.normal_mass * (v + c.restitution * p.approach_velocity);
+      const double total = std::max(p.normal_impulse + change, 0.0);
+      apply(inertia, c, p, (total - p.normal_impulse) * c.normal, s);
+      p.normal_impulse = total;
+    }
+  }
+}
+
 void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
-                       int iterations, double slop, MotionState& s) {
+                       int iterations, double slop, MotionState& s,
+                       std::vector<Transform>& rotations) {
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
+  rotations.resize(s.angle.size());
   for (int i = 0; i < iterations; ++i) {
+    // One rotation per body per pass rather than per contact point: the turns within a pass are
+    // tiny, and the next pass starts from the corrected angles.
+    for (std::size_t b = 0; b < s.angle.size(); ++b)
+      rotations[b] = Transform(Vec2::Zero(), s.angle[b]);
     for (const Contact& c : contacts) {
       for (int k = 0; k < c.count; ++k) {
         const ContactPointState& p = c.points[k];
-        const Transform frame_a(s.position[c.body_a], s.angle[c.body_a]);
-        const Transform frame_b(s.position[c.body_b], s.angle[c.body_b]);
-        const Vec2 anchor_a = frame_a.apply(p.local_anchor_a);
-        const Vec2 anchor_b = frame_b.apply(p.local_anchor_b);
-        const double separation = (anchor_a - anchor_b).dot(c.normal);
+        const Vec2 arm_a = rotations[c.body_a].rotate(p.local_anchor_a);
+        const Vec2 arm_b = rotations[c.body_b].rotate(p.local_anchor_b);
+        const double separation =
+            (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
         if (excess == 0.0) continue;
-        const Vec2 arm_a = anchor_a - s.position[c.body_a];
-        const Vec2 arm_b = anchor_b - s.position[c.body_b];
         // The same effective mass as for impulses, applied to a displacement instead of a velocity.
         const Vec2 shift = -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal;
         s.position[c.body_a] +=

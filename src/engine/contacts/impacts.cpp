@@ -65,16 +65,13 @@ double speed_bound(const ShapeRecord& r, const Ballistic& m, double h) {
 }  // namespace
 
 std::optional<double> ImpactSearch::time_of_impact(const ShapeRecord& a, const ShapeRecord& b,
-                                                   const Ballistic& motion, double h,
-                                                   double slop) const {
+                                                   double d0, double d1, const Ballistic& motion,
+                                                   double h) const {
   const auto distance = [&](double tau) {
     return signed_distance(
         to_world(a.local, Transform(motion.position(a.body, tau), motion.angle(a.body, tau))),
         to_world(b.local, Transform(motion.position(b.body, tau), motion.angle(b.body, tau))));
   };
-  const double d0 = distance(0.0);
-  if (d0 <= slop) return std::nullopt;  // already in contact: the contact solver's business
-  const double d1 = distance(h);
   if (d1 <= 0.0) {
     // Bracketed: TOMS 748 converges superlinearly on the smooth distance of ballistic motion.
     std::uintmax_t iterations = 100;
@@ -99,13 +96,20 @@ std::optional<double> ImpactSearch::time_of_impact(const ShapeRecord& a, const S
 }
 
 std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs,
-                                             const BodyShapes& shapes, const Ballistic& motion,
-                                             double h, double slop) {
+                                             const BodyShapes& shapes,
+                                             const std::vector<WorldShape>& start,
+                                             const std::vector<WorldShape>& end,
+                                             const Ballistic& motion, double h, double slop,
+                                             double min_speed, double margin) {
   touching_.clear();
   std::optional<double> best;
   const double same_time = 1e-12 + 1e-9 * h;  // s: impacts this close count as simultaneous
   for (const ProxyPair& p : pairs) {
-    const auto tau = time_of_impact(shapes[p.first], shapes[p.second], motion, h, slop);
+    const double d0 = signed_distance(start[p.first], start[p.second]);
+    if (d0 <= slop) continue;  // already in contact: the contact solver's business
+    const double d1 = signed_distance(end[p.first], end[p.second]);
+    if (d0 < margin && d0 - d1 < min_speed * h) continue;
+    const auto tau = time_of_impact(shapes[p.first], shapes[p.second], d0, d1, motion, h);
     if (!tau) continue;
     if (!best || *tau < *best - same_time) {
       best = tau;
@@ -170,6 +174,7 @@ void resolve_impacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shap
   prepare_contacts(contacts, inertia, s, std::numeric_limits<double>::infinity(), settings);
   // Enough passes for Gauss–Seidel to converge on a handful of simultaneous points.
   solve_velocities(contacts, inertia, 64, s);
+  apply_restitution(contacts, inertia, s);
   for (const Contact& c : contacts) {
     Vec2 point = Vec2::Zero();
     double impulse = 0.0;

@@ -36,16 +36,21 @@ struct Ballistic {
 class ImpactSearch {
  public:
   /// The earliest τ in (0, h] at which a pair of `pairs` that is apart at the start (signed
-  /// distance > `slop` [m]) touches; nothing if no such pair does.
+  /// distance > `slop` [m]) touches; nothing if no such pair does. Pairs closer than `margin` [m]
+  /// that close slower than `min_speed` [m/s] over the step are left to the contact solver's
+  /// speculative contacts, as they bounce no more than resting contacts (restitution threshold).
+  /// `start` and `end` are the shapes placed at τ = 0 and at τ = h along `motion`.
   std::optional<double> earliest(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
-                                 const Ballistic& motion, double h, double slop);
+                                 const std::vector<WorldShape>& start,
+                                 const std::vector<WorldShape>& end, const Ballistic& motion,
+                                 double h, double slop, double min_speed, double margin);
 
   /// The pairs found touching at the earliest time by the last call to earliest().
   const std::vector<ProxyPair>& touching() const { return touching_; }
 
  private:
-  std::optional<double> time_of_impact(const ShapeRecord& a, const ShapeRecord& b,
-                                       const Ballistic& motion, double h, double slop) const;
+  std::optional<double> time_of_impact(const ShapeRecord& a, const ShapeRecord& b, double d0,
+                                       double d1, const Ballistic& motion, double h) const;
   std::vector<ProxyPair> touching_;
 };
 

@@ -1,0 +1,67 @@
+// `gamephysics simulate`: a scene file in, its trajectory out (docs/scene-format.md).
+#include <exception>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/partial_file.hpp"
+#include "engine/input_error.hpp"
+#include "engine/output/output_times.hpp"
+#include "engine/output/trajectory.hpp"
+#include "engine/scene/run.hpp"
+
+namespace gp::cli {
+
+namespace {
+
+constexpr int kBadInput = 2;
+constexpr int kRunFailed = 1;
+
+void explain(const std::string& file, const Scene& scene, const Space& space) {
+  std::cout << "pipeline of a step of " << file << " (" << space.body_count()
+            << " bodies, dt = " << scene.dt << " s, "
+            << OutputTimes(scene.duration, scene.output_dt).size() << " output instants from 0 to "
+            << scene.duration << " s):\n";
+  int number = 0;
+  for (const PipelineStage& stage : space.pipeline()) {
+    std::cout << "  " << ++number << ". " << stage.name;
+    if (!stage.srs_ids.empty()) std::cout << "  [" << stage.srs_ids << "]";
+    std::cout << "\n     " << stage.description << "\n";
+  }
+}
+
+}  // namespace
+
+int simulate(const SimulateOptions& options) {
+  const std::string file = options.scene.string();
+  if (!options.out && !options.explain) {
+    std::cerr << "error: simulate: give --out OUT.csv (or --explain)\n";
+    return kBadInput;
+  }
+  Scene scene;
+  std::unique_ptr<Space> space;
+  std::unique_ptr<PartialFile> out;
+  try {
+    scene = load_scene(options.scene, options.overrides);
+    space = build_space(scene);
+    if (options.explain) explain(file, scene, *space);
+    if (!options.out) return 0;
+    out = std::make_unique<PartialFile>(*options.out);
+  } catch (const InputError& e) {
+    std::cerr << "error: " << file << ": " << e.what() << "\n";
+    return kBadInput;
+  }
+  try {
+    TrajectoryCsv csv(out->stream());
+    run_scene(*space, scene, [&](double t) { csv.write(t, *space); });
+    out->commit();
+  } catch (const std::exception& e) {  // NumericalError, or the output could not be written
+    std::cerr << "error: " << file << ": " << e.what() << "\n";
+    return kRunFailed;
+  }
+  std::cout << "wrote " << options.out->string() << ": " << space->body_count()
+            << " bodies from t = 0 to " << scene.duration << " s\n";
+  return 0;
+}
+
+}  // namespace gp::cli

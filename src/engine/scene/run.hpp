@@ -1,0 +1,17 @@
+#pragma once
+// A run of a scene: its space stepped from t = 0 to the end, stopping on every output instant.
+
+#include <functional>
+
+#include "engine/scene/scene.hpp"
+#include "engine/space.hpp"
+
+namespace gp {
+
+/// Steps `space`, built from `scene` and still at t = 0, to scene.duration with steps of
+/// scene.dt, shortening the step that would cross an output instant (OutputTimes) so that it ends
+/// on it; calls at_output(t) at each instant, t = 0 first and t = scene.duration last, with t
+/// exactly k·output_dt or the duration. Throws NumericalError when a state becomes non-finite.
+void run_scene(Space& space, const Scene& scene, const std::function<void(double t)>& at_output);
+
+}  // namespace gp

@@ -1,0 +1,29 @@
+#pragma once
+// Small scenes for the peer-engine tests, built in code.
+
+#include "engine/scene/scene.hpp"
+
+namespace gp::peers::testing {
+
+/// A scene with no bodies yet: no gravity, dt [s], duration 1 s, output every 0.5 s.
+inline Scene empty_scene(double dt) {
+  Scene scene;
+  scene.dt = dt;
+  scene.duration = 1.0;
+  scene.output_dt = 0.5;
+  return scene;
+}
+
+/// A dynamic disc of radius 0.5 m and mass [kg] at `position` [m] with `velocity` [m/s].
+inline BodyDef ball(const std::string& name, const Vec2& position, const Vec2& velocity,
+                    double mass, double restitution) {
+  BodyDef def;
+  def.name = name;
+  def.position = position;
+  def.velocity = velocity;
+  def.mass = mass;
+  def.shapes.push_back({Shape::circle(0.5), restitution});
+  return def;
+}
+
+}  // namespace gp::peers::testing

@@ -1,0 +1,124 @@
+// The benchmark workloads and the summary of `gamephysics_bench` (NFR:Performance).
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <variant>
+
+#include "verification/bench/bench_engine.hpp"
+#include "verification/bench/summary.hpp"
+#include "verification/bench/workloads.hpp"
+
+namespace {
+
+bool same_shape(const gp::Shape& a, const gp::Shape& b) {
+  if (a.kind() != b.kind()) return false;
+  if (const auto* c = std::get_if<gp::Circle>(&a.geometry())) {
+    const auto& d = std::get<gp::Circle>(b.geometry());
+    return c->center == d.center && c->radius == d.radius;
+  }
+  const auto* s = std::get_if<gp::Segment>(&a.geometry());
+  const auto* t = std::get_if<gp::Segment>(&b.geometry());
+  return s && t && s->a == t->a && s->b == t->b && s->radius == t->radius;
+}
+
+}  // namespace
+
+TEST_CASE("rain built in code is scenes/rain1000.json to the last bit", "[NFR:Performance]") {
+  const gp::Scene file = gp::load_scene(std::string(GP_SOURCE_DIR) + "/scenes/rain1000.json");
+  const gp::Scene code = gp::bench::rain(1000);
+  CHECK(code.settings.gravity == file.settings.gravity);
+  CHECK(code.dt == file.dt);
+  CHECK(code.duration == file.duration);
+  CHECK(code.output_dt == file.output_dt);
+  REQUIRE(code.bodies.size() == file.bodies.size());
+  for (std::size_t i = 0; i < file.bodies.size(); ++i) {
+    const gp::BodyDef& a = code.bodies[i];
+    const gp::BodyDef& b = file.bodies[i];
+    INFO(b.name);
+    CHECK(a.name == b.name);
+    CHECK(a.type == b.type);
+    CHECK(a.position == b.position);
+    CHECK(a.velocity == b.velocity);
+    CHECK(a.mass == b.mass);
+    REQUIRE(a.shapes.size() == b.shapes.size());
+    for (std::size_t k = 0; k < a.shapes.size(); ++k) {
+      CHECK(same_shape(a.shapes[k].shape, b.shapes[k].shape));
+      CHECK(a.shapes[k].friction == b.shapes[k].friction);
+      CHECK(a.shapes[k].restitution == b.shapes[k].restitution);
+      CHECK(a.shapes[k].density == b.shapes[k].density);
+    }
+  }
+}
+
+TEST_CASE("Larger rain scenes widen the box and keep 25 rows", "[NFR:Performance]") {
+  const gp::Scene rain = gp::bench::rain(4000);
+  REQUIRE(rain.bodies.size() == 4001);
+  const auto& floor = std::get<gp::Segment>(rain.bodies[0].shapes[0].shape.geometry());
+  CHECK(floor.b.x() - floor.a.x() == 320.0);
+  CHECK(rain.bodies.back().position.y() == 5.0 + 24 * 1.5);
+  CHECK_THROWS_AS(gp::bench::rain(1010), std::invalid_argument);
+  CHECK(gp::bench::free_fall(10).bodies.size() == 10);
+}
+
+TEST_CASE("Every engine runs a workload and the summary gives medians and ratios",
+          "[NFR:Performance]") {
+  const gp::Scene scene = gp::bench::free_fall(4);
+  for (auto engine :
+       {gp::bench::Engine::Ours, gp::bench::Engine::Chipmunk, gp::bench::Engine::Box2d}) {
+    gp::bench::EngineRun run(engine, scene);
+    run.step(scene.dt);
+    INFO(gp::bench::engine_label(engine));
+    CHECK(run.state(3).position.y() > scene.bodies[3].position.y());
+    CHECK_FALSE(run.describe().empty());
+  }
+  // Three repetitions of ours (10, 30, 20 ms) and one of chipmunk (5 ms).
+  std::vector<benchmark::BenchmarkReporter::Run> runs;
+  for (const auto& [name, ms] :
+       {std::pair{"w/ours", 10.0}, {"w/ours", 30.0}, {"w/ours", 20.0}, {"w/chipmunk", 5.0}}) {
+    benchmark::BenchmarkReporter::Run run;
+    run.run_name.function_name = name;
+    run.time_unit = benchmark::kMillisecond;
+    run.iterations = 1;
+    run.real_accumulated_time = ms / 1e3;
+    run.counters["moved_m"] = 0.25;
+    runs.push_back(run);
+  }
+  const std::vector<gp::bench::Workload> list{{"w", scene, 100, gp::BodyId{0}}};
+  const auto all = gp::bench::figures(list, runs);
+  REQUIRE(all.size() == 2);
+  CHECK(all[0].median_ms == Approx(20.0));
+  CHECK(all[0].min_ms == Approx(10.0));
+  CHECK(all[0].max_ms == Approx(30.0));
+  CHECK(all[0].stddev_ms == Approx(10.0));
+  CHECK(all[0].body_steps_per_s == Approx(4 * 100 / 0.020));
+  CHECK(all[1].moved_m == 0.25);
+  std::ostringstream out;
+  gp::bench::print_summary(out, all);
+  CHECK_THAT(out.str(), Catch::Contains("4.00"));  // ours/chipmunk: 20 ms / 5 ms
+  CHECK_THAT(out.str(), Catch::Contains("moved 0.25 m in chipmunk"));
+}
+
+TEST_CASE("The summary reads the statistics when only those were displayed", "[NFR:Performance]") {
+  std::vector<benchmark::BenchmarkReporter::Run> runs;
+  for (const auto& [statistic, ms] :
+       {std::pair{"median", 20.0}, {"min", 10.0}, {"max", 30.0}, {"stddev", 4.0}}) {
+    benchmark::BenchmarkReporter::Run run;
+    run.run_name.function_name = "w/box2d";
+    run.run_type = benchmark::BenchmarkReporter::Run::RT_Aggregate;
+    run.aggregate_name = statistic;
+    run.repetitions = 5;
+    run.time_unit = benchmark::kMillisecond;
+    run.iterations = 1;
+    run.real_accumulated_time = ms / 1e3;
+    runs.push_back(run);
+  }
+  const std::vector<gp::bench::Workload> list{{"w", gp::bench::free_fall(1), 10, std::nullopt}};
+  const auto all = gp::bench::figures(list, runs);
+  REQUIRE(all.size() == 1);
+  CHECK(all[0].repetitions == 5);
+  CHECK(all[0].median_ms == Approx(20.0));
+  CHECK(all[0].min_ms == Approx(10.0));
+  CHECK(all[0].max_ms == Approx(30.0));
+  CHECK(all[0].stddev_ms == Approx(4.0));
+  CHECK(all[0].moved_m < 0.0);
+}

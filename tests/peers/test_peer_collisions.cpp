@@ -1,0 +1,52 @@
+// Collisions in the peer engines, with our engine's rule for combining two surfaces.
+#include <catch2/catch.hpp>
+
+#include "peer_scenes.hpp"
+#include "verification/peers/peer_world.hpp"
+
+using Catch::Matchers::WithinAbs;
+using gp::peers::PeerEngine;
+using gp::peers::testing::ball;
+using gp::peers::testing::empty_scene;
+
+TEST_CASE("A head-on elastic collision of equal masses exchanges velocities in both peers",
+          "[NFR:Correctness][peers]") {
+  // One surface is elastic, the other not: our rule takes the larger C_R (1), where Chipmunk's
+  // own product would take 0 and stop both balls.
+  gp::Scene scene = empty_scene(1.0 / 60.0);
+  scene.bodies.push_back(ball("a", {-2.0, 0.0}, {2.0, 0.0}, 1.0, 1.0));
+  scene.bodies.push_back(ball("b", {2.0, 0.0}, {-2.0, 0.0}, 1.0, 0.0));
+  for (PeerEngine engine : {PeerEngine::Chipmunk, PeerEngine::Box2d}) {
+    auto world = gp::peers::make_peer(engine, gp::peers::peer_scene(scene));
+    for (int n = 0; n < 90; ++n) world->step(scene.dt);  // they touch at t = 0.75 s
+    INFO(gp::peers::engine_name(engine));
+    CHECK_THAT(world->state(0).velocity.x(), WithinAbs(-2.0, 1e-5));
+    CHECK_THAT(world->state(1).velocity.x(), WithinAbs(2.0, 1e-5));
+    CHECK_THAT(world->state(0).velocity.y(), WithinAbs(0.0, 1e-9));
+    CHECK(world->state(0).position.x() < world->state(1).position.x());
+  }
+}
+
+TEST_CASE("Peers combine friction as the geometric mean, as our engine does",
+          "[NFR:Correctness][peers]") {
+  // A box sliding at 2 m/s on a static floor, μ = 0.9 on the box and 0.1 on the floor: μ = 0.3,
+  // so friction slows it by μ g = 2.943 m/s² (Chipmunk's product 0.09 would give 0.883 m/s²).
+  gp::Scene scene = empty_scene(1.0 / 60.0);
+  scene.settings.gravity = {0.0, -9.81};
+  gp::BodyDef floor;
+  floor.name = "floor";
+  floor.type = gp::BodyType::Static;
+  floor.shapes.push_back({gp::Shape::box(100.0, 1.0, {0.0, -0.5}), 0.0, 0.1});
+  gp::BodyDef box;
+  box.name = "box";
+  box.position = {0.0, 0.5};
+  box.velocity = {2.0, 0.0};
+  box.shapes.push_back({gp::Shape::box(1.0, 1.0), 0.0, 0.9});
+  scene.bodies = {floor, box};
+  for (PeerEngine engine : {PeerEngine::Chipmunk, PeerEngine::Box2d}) {
+    auto world = gp::peers::make_peer(engine, gp::peers::peer_scene(scene));
+    for (int n = 0; n < 30; ++n) world->step(scene.dt);  // 0.5 s, still sliding
+    INFO(gp::peers::engine_name(engine));
+    CHECK_THAT(world->state(1).velocity.x(), WithinAbs(2.0 - 0.3 * 9.81 * 0.5, 0.05));
+  }
+}

@@ -1,0 +1,88 @@
+// The trajectory CSV: its header, one row per body per instant, and numbers that read back to
+// the same doubles.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <numbers>
+#include <sstream>
+#include <vector>
+
+#include "engine/output/trajectory.hpp"
+#include "engine/scene/run.hpp"
+#include "scene_files.hpp"
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+  return fields;
+}
+
+double number(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  REQUIRE(*end == '\0');
+  return value;
+}
+
+// A spinning, moving body and a point mass: every column takes values other than 0 and 1.
+const std::string kScene = R"({"gravity": [0.3, -9.81], "dt": 0.01, "duration": 0.7,
+    "output_dt": 0.1, "bodies": [
+    {"name": "spinner", "position": [0.1, 0.2], "angle": 6.2, "velocity": [1.1, 2.3],
+     "angular_velocity": 3.7, "shapes": [{"type": "box", "width": 0.3, "height": 0.7}]},
+    {"name": "dot", "position": [-1, 1], "velocity": [-0.7, 0.1], "mass": 2}]})";
+
+}  // namespace
+
+TEST_CASE("The trajectory reads back to the engine's state, to the bit",
+          "[FR:Calculate-Translation-Over-Time][FR:Calculate-Rotation-Over-Time]") {
+  const gp::Scene scene = gp::test::load(kScene);
+  const auto space = gp::build_space(scene);
+  std::ostringstream csv;
+  gp::TrajectoryCsv writer(csv);
+  std::vector<std::pair<double, std::vector<gp::BodyState>>> expected;
+  gp::run_scene(*space, scene, [&](double t) {
+    writer.write(t, *space);
+    expected.push_back({t, {space->state(0), space->state(1)}});
+  });
+
+  std::istringstream in(csv.str());
+  std::string line;
+  REQUIRE(std::getline(in, line));
+  CHECK(line == "t,body,x,y,angle,vx,vy,omega");
+  std::size_t rows = 0;
+  for (const auto& [t, states] : expected) {
+    for (std::size_t body = 0; body < states.size(); ++body, ++rows) {
+      REQUIRE(std::getline(in, line));
+      const auto fields = split(line);
+      REQUIRE(fields.size() == 8);
+      const gp::BodyState& s = states[body];
+      CHECK(number(fields[0]) == t);
+      CHECK(fields[1] == space->name(static_cast<gp::BodyId>(body)));
+      CHECK(number(fields[2]) == s.position.x());
+      CHECK(number(fields[3]) == s.position.y());
+      CHECK(number(fields[4]) == s.angle);
+      CHECK(number(fields[5]) == s.velocity.x());
+      CHECK(number(fields[6]) == s.velocity.y());
+      CHECK(number(fields[7]) == s.angular_velocity);
+      // SRS output constraint 0 ≤ ϕ ≤ 2π, reported in [0, 2π).
+      CHECK(s.angle >= 0.0);
+      CHECK(s.angle < 2 * std::numbers::pi);
+    }
+  }
+  CHECK(rows == 2 * 8);  // t = 0, 0.1, …, 0.7
+  CHECK_FALSE(std::getline(in, line));
+}
+
+TEST_CASE("Numbers are written with 17 significant digits",
+          "[FR:Calculate-Translation-Over-Time]") {
+  const gp::Scene scene = gp::test::load(gp::test::scene_with(
+      R"({"name": "third", "position": [0.1, 0.30000000000000004], "mass": 1})"));
+  const auto space = gp::build_space(scene);
+  std::ostringstream csv;
+  gp::TrajectoryCsv(csv).write(1.0 / 3.0, *space);
+  CHECK(csv.str() ==
+        "t,body,x,y,angle,vx,vy,omega\n"
+        "0.33333333333333331,third,0.10000000000000001,0.30000000000000004,0,0,0,0\n");
+}

@@ -1,0 +1,34 @@
+#pragma once
+// Our engine and the two peers behind one stepping interface, so that one benchmark body times
+// all three alike.
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "engine/scene/scene.hpp"
+#include "verification/peers/peer_world.hpp"
+
+namespace gp::bench {
+
+enum class Engine { Ours, Chipmunk, Box2d };
+
+/// "ours", "chipmunk", "box2d".
+std::string_view engine_label(Engine engine);
+
+/// A scene set up in one engine, ready to step from t = 0.
+class EngineRun {
+ public:
+  EngineRun(Engine engine, const Scene& scene);
+
+  void step(double dt);
+  BodyState state(BodyId body) const;
+  /// The engine and the settings it runs with.
+  std::string describe() const;
+
+ private:
+  std::unique_ptr<Space> ours_;
+  std::unique_ptr<peers::PeerWorld> peer_;
+};
+
+}  // namespace gp::bench

@@ -1,0 +1,64 @@
+#include "verification/bench/benchmarks.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "verification/bench/bench_engine.hpp"
+
+namespace gp::bench {
+
+namespace {
+
+void run_workload(benchmark::State& state, const Workload& w, Engine engine) {
+  double moved = 0.0;
+  try {
+    for (auto _ : state) {
+      state.PauseTiming();
+      auto run = std::make_unique<EngineRun>(engine, w.scene);
+      const Vec2 start = w.watched ? run->state(*w.watched).position : Vec2::Zero();
+      state.ResumeTiming();
+      for (int i = 0; i < w.steps; ++i) run->step(w.scene.dt);
+      state.PauseTiming();
+      if (w.watched) moved = (run->state(*w.watched).position - start).norm();
+      run.reset();
+      state.ResumeTiming();
+    }
+  } catch (const std::exception& e) {  // NumericalError: a state became non-finite
+    state.SkipWithError(e.what());
+    return;
+  }
+  const auto body_steps = static_cast<double>(w.scene.bodies.size()) * w.steps;
+  state.counters[kBodyStepsCounter] =
+      benchmark::Counter(body_steps, benchmark::Counter::kIsIterationInvariantRate);
+  if (w.watched) state.counters[kMovedCounter] = moved;
+}
+
+double smallest(const std::vector<double>& v) {
+  return *std::min_element(v.begin(), v.end());
+}
+double largest(const std::vector<double>& v) {
+  return *std::max_element(v.begin(), v.end());
+}
+
+}  // namespace
+
+void register_benchmarks(const std::vector<Workload>& list) {
+  for (const Workload& w : list) {
+    for (Engine engine : {Engine::Ours, Engine::Chipmunk, Engine::Box2d}) {
+      const std::string name = w.name + "/" + std::string(engine_label(engine));
+      benchmark::RegisterBenchmark(
+          name.c_str(), [&w, engine](benchmark::State& s) { run_workload(s, w, engine); })
+          ->Iterations(1)
+          ->UseRealTime()
+          ->Unit(benchmark::kMillisecond)
+          ->ComputeStatistics("min", smallest)
+          ->ComputeStatistics("max", largest);
+    }
+  }
+}
+
+}  // namespace gp::bench

@@ -1,0 +1,61 @@
+#include "verification/oracle/arkode_solver.hpp"
+
+#include <arkode/arkode_erkstep.h>
+
+#include <cstdlib>
+#include <new>
+
+namespace gp::verification {
+
+void ArkodeSolver::FreeMemory::operator()(void* memory) const {
+  ERKStepFree(&memory);
+}
+
+ArkodeSolver::ArkodeSolver(const OracleOptions& options, OdeProblem& problem, double t0,
+                           const double* y0)
+    : OdeSolver(problem, y0, "arkode-erk", options.max_steps) {
+  void* memory = ERKStepCreate(OdeProblem::rhs, t0, y_.get(), context_.get());
+  if (memory == nullptr) throw std::bad_alloc();
+  memory_.reset(memory);
+  check(ERKStepSetErrHandlerFn(memory, keep_error, this), "ERKStepSetErrHandlerFn");
+  check(ERKStepSetTableNum(memory, ARKODE_VERNER_8_5_6), "ERKStepSetTableNum");
+  check(ERKStepSetUserData(memory, &problem), "ERKStepSetUserData");
+  check(ERKStepSStolerances(memory, options.rtol, options.atol), "ERKStepSStolerances");
+  if (problem.root_count() > 0) {
+    check(ERKStepRootInit(memory, problem.root_count(), OdeProblem::roots), "ERKStepRootInit");
+    check(ERKStepSetRootDirection(memory, directions_.data()), "ERKStepSetRootDirection");
+    // A pair just resolved starts at distance ~0: expected, not worth a warning.
+    check(ERKStepSetNoInactiveRootWarn(memory), "ERKStepSetNoInactiveRootWarn");
+  }
+}
+
+OdeSolver::Stop ArkodeSolver::advance(double t_stop, double& t) {
+  check(ERKStepSetStopTime(memory_.get(), t_stop), "ERKStepSetStopTime");
+  int flag = ARK_SUCCESS;
+  do {
+    // One step at a time, to stop at once when a callback failed (as CvodeSolver::advance).
+    flag = ERKStepEvolve(memory_.get(), t_stop, y_.get(), &t, ARK_ONE_STEP);
+    after_step(t);
+  } while (flag == ARK_SUCCESS && t < t_stop);
+  if (flag < 0) {
+    const std::unique_ptr<char, decltype(&std::free)> name(ERKStepGetReturnFlagName(flag),
+                                                           &std::free);
+    fail(name ? name.get() : std::to_string(flag), t);
+  }
+  if (flag != ARK_ROOT_RETURN) return Stop::Reached;
+  check(ERKStepGetRootInfo(memory_.get(), crossed_.data()), "ERKStepGetRootInfo");
+  return Stop::Root;
+}
+
+void ArkodeSolver::restart(double t) {
+  steps_before_restart_ = steps();
+  check(ERKStepReInit(memory_.get(), OdeProblem::rhs, t, y_.get()), "ERKStepReInit");
+}
+
+long ArkodeSolver::steps() const {
+  long count = 0;
+  ERKStepGetNumSteps(memory_.get(), &count);
+  return steps_before_restart_ + count;
+}
+
+}  // namespace gp::verification

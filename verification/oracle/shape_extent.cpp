@@ -1,0 +1,46 @@
+#include "verification/oracle/shape_extent.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+namespace gp::verification {
+
+double reach(const Shape& shape) {
+  return std::visit(
+      [](const auto& g) -> double {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Circle>) {
+          return g.center.norm() + g.radius;
+        } else if constexpr (std::is_same_v<G, Segment>) {
+          return std::max(g.a.norm(), g.b.norm()) + g.radius;
+        } else {
+          double r = 0.0;
+          for (int i = 0; i < g.count; ++i) r = std::max(r, g.vertices[i].norm());
+          return r;
+        }
+      },
+      shape.geometry());
+}
+
+double half_thickness(const Shape& shape) {
+  return std::visit(
+      [](const auto& g) -> double {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Circle> || std::is_same_v<G, Segment>) {
+          return g.radius;
+        } else {
+          Vec2 centroid = Vec2::Zero();
+          for (int i = 0; i < g.count; ++i) centroid += g.vertices[i] / g.count;
+          double least = std::numeric_limits<double>::infinity();
+          for (int i = 0; i < g.count; ++i) {
+            least = std::min(least, g.normals[i].dot(g.vertices[i] - centroid));
+          }
+          return least;
+        }
+      },
+      shape.geometry());
+}
+
+}  // namespace gp::verification

@@ -1,0 +1,127 @@
+// Conservation over long runs: linear and angular momentum and energy of the two-body orbit
+// under pairwise gravitation, and the energy of elastic discs bouncing in a closed box.
+#include <cmath>
+
+#include "engine/scene/run.hpp"
+#include "gamephysics/models/dd/kinetic_energy.hpp"
+#include "gamephysics/models/dd/potential_energy.hpp"
+#include "verification/suite/scene_builders.hpp"
+#include "verification/suite/suite.hpp"
+
+namespace gp::verification {
+
+namespace {
+
+struct Invariants {
+  Vec2 momentum = Vec2::Zero();   ///< kg·m/s
+  double angular_momentum = 0.0;  ///< kg·m²/s about the origin
+  double energy = 0.0;  ///< J: kinetic with rotation, uniform-field and pairwise potential
+};
+
+Invariants invariants(const Space& space) {
+  Invariants v;
+  std::vector<BodyId> dynamic;
+  for (BodyId id = 0; id < space.body_count(); ++id) {
+    if (space.type(id) == BodyType::Dynamic) dynamic.push_back(id);
+  }
+  for (BodyId id : dynamic) {
+    const BodyState s = space.state(id);
+    const double m = space.mass(id);
+    const double I = std::isinf(space.moment(id)) ? 0.0 : space.moment(id);
+    v.momentum += m * s.velocity;
+    v.angular_momentum += m * cross(s.position, s.velocity) + I * s.angular_velocity;
+    v.energy += dd::kinetic_energy(m, s.velocity, I, s.angular_velocity) +
+                dd::potential_energy(m, space.settings().gravity, s.position);
+  }
+  if (const auto G = space.settings().G) {
+    // The pairwise potential −G m_i m_j / d, whose gradient is TM:UniversalGravLaw (the SRS has
+    // no DD for it: DD:potEnergy is the uniform field).
+    for (std::size_t i = 0; i < dynamic.size(); ++i) {
+      for (std::size_t j = i + 1; j < dynamic.size(); ++j) {
+        const double d =
+            (space.state(dynamic[i]).position - space.state(dynamic[j]).position).norm();
+        v.energy -= *G * space.mass(dynamic[i]) * space.mass(dynamic[j]) / d;
+      }
+    }
+  }
+  return v;
+}
+
+struct Drift {
+  double momentum = 0.0;          ///< largest |p − p₀| / Σ m|v₀|
+  double angular_momentum = 0.0;  ///< largest |L − L₀| / |L₀|
+  double energy = 0.0;            ///< largest |E − E₀| / |E₀|
+  double energy_gain = 0.0;       ///< largest (E − E₀) / |E₀|, ≤ 0 when energy never grows
+};
+
+Drift drift_over(const Scene& scene, long steps) {
+  const auto space = build_space(scene);
+  const Invariants start = invariants(*space);
+  double momentum_scale = 0.0;  // Σ m|v|: the size of the terms whose sum is conserved
+  for (BodyId id = 0; id < space->body_count(); ++id) {
+    if (space->type(id) == BodyType::Dynamic) {
+      momentum_scale += space->mass(id) * space->state(id).velocity.norm();
+    }
+  }
+  Drift d;
+  for (long k = 0; k < steps; ++k) {
+    space->step(scene.dt);
+    const Invariants now = invariants(*space);
+    d.momentum = std::max(d.momentum, (now.momentum - start.momentum).norm() / momentum_scale);
+    d.angular_momentum =
+        std::max(d.angular_momentum, std::abs(now.angular_momentum - start.angular_momentum) /
+                                         std::abs(start.angular_momentum));
+    d.energy = std::max(d.energy, std::abs(now.energy - start.energy) / std::abs(start.energy));
+    d.energy_gain = std::max(d.energy_gain, (now.energy - start.energy) / std::abs(start.energy));
+  }
+  return d;
+}
+
+// 16 elastic, frictionless discs in a closed 20 m square, no gravity.
+Scene elastic_box() {
+  Scene s = make_scene(Vec2::Zero(), 1.0 / 60, 0.0);
+  s.bodies.push_back(wall("bottom", {-10, -10}, {10, -10}, 1.0));
+  s.bodies.push_back(wall("top", {-10, 10}, {10, 10}, 1.0));
+  s.bodies.push_back(wall("left", {-10, -10}, {-10, 10}, 1.0));
+  s.bodies.push_back(wall("right", {10, -10}, {10, 10}, 1.0));
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      s.bodies.push_back(disc("d" + std::to_string(4 * i + j), {-6.0 + 4.0 * i, -6.0 + 4.0 * j},
+                              {std::sin(1.0 + 3.0 * i + j), std::cos(2.0 * i - j)}, 0.5, 1.0));
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
+                                       const SuiteOptions& o) {
+  CheckList list("conservation over long runs");
+  const long steps = o.quick ? 1000 : 100000;
+  const std::string n = std::to_string(steps) + " steps";
+  for (const auto& [name, scene] : scenes) {
+    if (!scene.settings.G) continue;
+    if (o.progress) *o.progress << "  conservation: " << name << ", " << n << "\n";
+    const Drift d = drift_over(scene, steps);
+    list.check(name + ", velocity_verlet, " + n, "TM:NewtonThirdLawMot TM:UniversalGravLaw",
+               "linear momentum drift " + figure(d.momentum) + " (relative to Σ m|v|)",
+               "≤ 1e-12 relative: equal and opposite forces", d.momentum <= 1e-12);
+    list.check(name + ", velocity_verlet, " + n, "IM:transMot GD:accelGravity",
+               "angular momentum drift " + figure(d.angular_momentum) + " (relative)",
+               "≤ 1e-9 relative: central forces, symmetric integrator", d.angular_momentum <= 1e-9);
+    list.check(name + ", velocity_verlet, " + n, "DD:kEnergy IM:transMot",
+               "energy drift " + figure(d.energy) + " (relative)",
+               "≤ 1e-3 relative and bounded: symplectic integrator", d.energy <= 1e-3);
+  }
+  if (o.progress) *o.progress << "  conservation: elastic discs in a box, " << n << "\n";
+  const Drift box = drift_over(elastic_box(), steps);
+  list.check("16 elastic discs in a closed box, C_R = 1, μ = 0, " + n,
+             "IM:col2D GD:impulse DD:kEnergy",
+             "energy drift " + figure(box.energy) + ", largest gain " + figure(box.energy_gain) +
+                 " (relative)",
+             "energy never grows by more than 1e-9", box.energy_gain <= 1e-9);
+  return list.rows();
+}
+
+}  // namespace gp::verification

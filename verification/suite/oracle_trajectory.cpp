@@ -1,0 +1,22 @@
+#include "verification/suite/oracle_trajectory.hpp"
+
+#include <ctime>
+
+namespace gp::verification {
+
+Trajectory run_oracle_trajectory(const Scene& scene, std::span<const double> times,
+                                 const OracleOptions& options) {
+  const auto space = build_space(scene);
+  const std::clock_t start = std::clock();
+  OracleResult result = run_oracle(*space, times, options);
+  Trajectory t;
+  t.cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+  t.times = std::move(result.times);
+  t.states = std::move(result.states);
+  for (const OracleEvent& e : result.events) {
+    t.impacts.push_back({e.time, e.body_a, e.body_b, e.normal, e.point, e.impulse});
+  }
+  return t;
+}
+
+}  // namespace gp::verification

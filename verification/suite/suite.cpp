@@ -1,0 +1,46 @@
+#include "verification/suite/suite.hpp"
+
+#include <iomanip>
+#include <iostream>
+
+#include "verification/suite/report.hpp"
+
+namespace gp::verification {
+
+bool run_suite(const SuiteOptions& o, const std::vector<Check>& audit_rows) {
+  std::vector<Check> checks = audit_rows;
+  const auto scenes = load_scenes(o.root / "scenes");
+  CsvFiles data;
+  const auto add = [&checks](const std::vector<Check>& rows) {
+    checks.insert(checks.end(), rows.begin(), rows.end());
+  };
+  add(accuracy_checks(scenes, o, data));
+  add(convergence_checks(scenes, o, data));
+  add(conservation_checks(scenes, o));
+  add(hard_case_checks(o));
+  if (!o.quick) add(work_precision_checks(scenes, o, data));
+  write_report(o.out, checks, data, {});
+  const auto plots = make_plots(o.root / "verification" / "suite" / "plots.py", o.out);
+  write_report(o.out, checks, data, plots);
+
+  const ReportSummary summary = summarise(checks);
+  std::ostream& out = o.progress ? *o.progress : std::cout;
+  out << "\nVerification summary (" << (o.quick ? "quick" : "full") << "):\n";
+  out << "  " << std::left << std::setw(34) << "section" << std::right << std::setw(6) << "rows"
+      << std::setw(10) << "checked" << std::setw(8) << "failed\n";
+  for (const auto& [name, s] : summary.sections) {
+    out << "  " << std::left << std::setw(34) << name << std::right << std::setw(6) << s.rows
+        << std::setw(10) << s.checked << std::setw(7) << s.failed << "\n";
+  }
+  for (const Check* c : summary.failures) {
+    out << "  FAILED: " << c->section << ": " << c->name << ": " << c->measured
+        << " (criterion: " << c->criterion << ")\n";
+  }
+  out << "  report: " << (o.out / "index.html").string() << " ("
+      << (plots.empty() ? "no plots: see plots.log" : std::to_string(plots.size()) + " plots")
+      << ")\n";
+  out << "  result: " << (summary.failures.empty() ? "PASS" : "FAIL") << "\n";
+  return summary.failures.empty();
+}
+
+}  // namespace gp::verification

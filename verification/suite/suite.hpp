@@ -1,0 +1,48 @@
+#pragma once
+// `gamephysics verify`, the main job: the SRS audit, then every scene of scenes/ against the
+// SUNDIALS oracle with every game integrator, convergence orders, conservation over long runs,
+// the hard cases and speed against error; a report with tables and plots.
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "engine/scene/scene.hpp"
+#include "verification/suite/check.hpp"
+
+namespace gp::verification {
+
+struct SuiteOptions {
+  std::filesystem::path root;        ///< the repository: scenes/, srs/, tests/, traceability/
+  std::filesystem::path out;         ///< where the report goes (out/report)
+  bool quick = false;                ///< short runs only: what ctest runs
+  std::ostream* progress = nullptr;  ///< a line per scene and stage
+};
+
+/// A scene of scenes/ with its file name without extension.
+struct NamedScene {
+  std::string name;
+  Scene scene;
+};
+
+/// Every scene of `directory`, sorted by name.
+std::vector<NamedScene> load_scenes(const std::filesystem::path& directory);
+
+/// The sections of the suite; each returns its rows. `data` receives CSV files (name → text)
+/// for the report's plots.
+using CsvFiles = std::vector<std::pair<std::string, std::string>>;
+std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
+                                   CsvFiles& data);
+std::vector<Check> convergence_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
+                                      CsvFiles& data);
+std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
+                                       const SuiteOptions& o);
+std::vector<Check> hard_case_checks(const SuiteOptions& o);
+std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
+                                         const SuiteOptions& o, CsvFiles& data);
+
+/// Runs everything, writes the report, prints the summary; returns true when every check passed.
+bool run_suite(const SuiteOptions& options, const std::vector<Check>& audit_rows);
+
+}  // namespace gp::verification

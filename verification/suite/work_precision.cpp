@@ -1,0 +1,74 @@
+// Speed against error: CPU time per simulated second against the largest position error versus
+// the oracle, for every game integrator at six step sizes and for CVODE at six tolerances.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine/output/output_times.hpp"
+#include "verification/suite/oracle_trajectory.hpp"
+#include "verification/suite/scene_builders.hpp"
+#include "verification/suite/suite.hpp"
+
+namespace gp::verification {
+
+namespace {
+
+// Common instants for every step size below: multiples of the coarsest step.
+constexpr double kCoarsest = 1.0 / 15;
+
+}  // namespace
+
+std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
+                                         const SuiteOptions& o, CsvFiles& data) {
+  CheckList list("speed against error");
+  std::ostringstream csv;
+  csv << "scene,method,parameter,cpu_seconds_per_simulated_second,position_error\n";
+  std::vector<NamedScene> chosen;
+  for (const char* name : {"projectile", "bouncing_ball", "spinning_box", "orbit", "oblique"}) {
+    for (const auto& s : scenes) {
+      if (s.name == name) chosen.push_back(s);
+    }
+  }
+  chosen.push_back({"rain100", rain100()});
+  for (auto& [name, scene] : chosen) {
+    if (o.quick) scene.duration = std::min(scene.duration, 0.5);
+    if (o.progress) *o.progress << "  speed against error: " << name << "\n";
+    const OutputTimes output(scene.duration, kCoarsest);
+    std::vector<double> instants;
+    for (std::size_t k = 0; k < output.size(); ++k) instants.push_back(output[k]);
+    OracleOptions reference_options;
+    reference_options.rtol = reference_options.atol = 1e-12;
+    const Trajectory reference = run_oracle_trajectory(scene, instants, reference_options);
+    const double simulated = std::max(scene.duration, 1e-9);
+    std::size_t points = 0;
+    for (IntegratorKind kind :
+         {IntegratorKind::SymplecticEuler, IntegratorKind::VelocityVerlet, IntegratorKind::RK4}) {
+      for (int k = 0; k < (o.quick ? 2 : 6); ++k) {
+        const double dt = kCoarsest / (1 << k);
+        Scene stepped = scene;
+        stepped.output_dt = kCoarsest;
+        stepped.dt = dt;
+        const Trajectory run = run_engine(stepped, kind, dt);
+        const Differences d = compare(sample_at(run, instants), reference);
+        csv << name << "," << integrator_name(kind) << "," << dt << ","
+            << time_engine(stepped, kind, dt) / simulated << "," << d.position << "\n";
+        ++points;
+      }
+    }
+    for (int k = 0; k < (o.quick ? 2 : 6); ++k) {
+      OracleOptions options;
+      options.rtol = options.atol = std::pow(10.0, -4 - k);
+      const Trajectory run = run_oracle_trajectory(scene, instants, options);
+      const Differences d = compare(run, reference);
+      csv << name << ",cvode-adams," << options.rtol << "," << run.cpu_seconds / simulated << ","
+          << d.position << "\n";
+      ++points;
+    }
+    list.report(name, "LC:Variable-ODE-Solver NFR:Performance",
+                std::to_string(points) + " points: work-precision diagram " + name + ".png");
+  }
+  data.emplace_back("work_precision.csv", csv.str());
+  return list.rows();
+}
+
+}  // namespace gp::verification
