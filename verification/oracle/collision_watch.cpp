@@ -12,7 +12,7 @@
 #include "gamephysics/models/dd/chasles_theorem.hpp"
 #include "gamephysics/models/dd/relative_velocity.hpp"
 #include "gamephysics/models/im/collision_response.hpp"
-#include "verification/oracle/shape_extent.hpp"
+#include "engine/geometry/shape_extent.hpp"
 
 namespace gp::verification {
 

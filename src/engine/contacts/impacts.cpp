@@ -8,6 +8,7 @@
 
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
+#include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/transform.hpp"
 #include "gamephysics/models/dd/angular_acceleration.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
@@ -35,24 +36,6 @@ double Ballistic::angle(BodyId body, double tau) const {
 }
 
 namespace {
-
-// Farthest any point of the shape is from its body's centre of mass [m].
-double reach(const Shape& shape) {
-  return std::visit(
-      [](const auto& g) -> double {
-        using G = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<G, Circle>) {
-          return g.center.norm() + g.radius;
-        } else if constexpr (std::is_same_v<G, Segment>) {
-          return std::max(g.a.norm(), g.b.norm()) + g.radius;
-        } else {
-          double r = 0.0;
-          for (int i = 0; i < g.count; ++i) r = std::max(r, g.vertices[i].norm());
-          return r;
-        }
-      },
-      shape.geometry());
-}
 
 // Fastest any point of the shape can move during a step of h [s], a bound [m/s].
 double speed_bound(const ShapeRecord& r, const Ballistic& m, double h) {

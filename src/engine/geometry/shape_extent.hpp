@@ -1,10 +1,11 @@
 #pragma once
 // Two sizes of a shape that bound how far its body can move before the oracle could miss an
-// impact: how far its points reach from the centre of mass, and how thick it is.
+// impact (the oracle, the engine's time-of-impact search): how far its points reach from the
+// centre of mass, and how thick it is.
 
 #include "engine/geometry/shape.hpp"
 
-namespace gp::verification {
+namespace gp {
 
 /// Farthest any point of `shape` (body frame, centred on the centre of mass) is from the centre
 /// of mass [m]: a turn by Δϕ moves no point farther than reach · |Δϕ|.
@@ -15,4 +16,4 @@ double reach(const Shape& shape);
 /// moved less than this into another cannot yet have passed through it.
 double half_thickness(const Shape& shape);
 
-}  // namespace gp::verification
+}  // namespace gp

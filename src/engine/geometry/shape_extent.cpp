@@ -1,11 +1,11 @@
-#include "verification/oracle/shape_extent.hpp"
+#include "engine/geometry/shape_extent.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <type_traits>
 #include <variant>
 
-namespace gp::verification {
+namespace gp {
 
 double reach(const Shape& shape) {
   return std::visit(
@@ -43,4 +43,4 @@ double half_thickness(const Shape& shape) {
       shape.geometry());
 }
 
-}  // namespace gp::verification
+}  // namespace gp
