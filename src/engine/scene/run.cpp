@@ -16,14 +16,20 @@ constexpr double kStepTolerance = 1e-6;
 }  // namespace
 
 void run_scene(Space& space, const Scene& scene, const std::function<void(double t)>& at_output) {
+  run_steps(
+      scene, [&space](double dt) { space.step(dt); }, at_output);
+}
+
+void run_steps(const Scene& scene, const std::function<void(double dt)>& step,
+               const std::function<void(double t)>& at_output) {
   const OutputTimes times(scene.duration, scene.output_dt);
   at_output(times[0]);
   for (std::size_t k = 1; k < times.size(); ++k) {
     const double interval = times[k] - times[k - 1];
     const auto steps = std::max<std::int64_t>(
         1, static_cast<std::int64_t>(std::ceil(interval / scene.dt - kStepTolerance)));
-    for (std::int64_t i = 1; i < steps; ++i) space.step(scene.dt);
-    space.step(interval - static_cast<double>(steps - 1) * scene.dt);
+    for (std::int64_t i = 1; i < steps; ++i) step(scene.dt);
+    step(interval - static_cast<double>(steps - 1) * scene.dt);
     at_output(times[k]);
   }
 }

@@ -14,4 +14,8 @@ namespace gp {
 /// exactly k·output_dt or the duration. Throws NumericalError when a state becomes non-finite.
 void run_scene(Space& space, const Scene& scene, const std::function<void(double t)>& at_output);
 
+/// The same stepping for any engine (the peers): `step(dt)` advances it by dt [s].
+void run_steps(const Scene& scene, const std::function<void(double dt)>& step,
+               const std::function<void(double t)>& at_output);
+
 }  // namespace gp
