@@ -1,8 +1,5 @@
 #include "verification/peers/peer_trajectory.hpp"
 
-#include <array>
-#include <cstdio>
-
 #include "engine/output/trajectory.hpp"
 
 namespace gp::peers {

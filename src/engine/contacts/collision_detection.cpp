@@ -38,6 +38,36 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
   return pairs_;
 }
 
+Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                     const MotionState& s) {
+  const ShapeRecord& a = shapes[pair.first];
+  const ShapeRecord& b = shapes[pair.second];
+  Contact c{pair.first,
+            pair.second,
+            a.body,
+            b.body,
+            m.normal,
+            m.count,
+            {},
+            std::max(a.restitution, b.restitution),
+            std::sqrt(a.friction * b.friction)};
+  for (int k = 0; k < m.count; ++k) {
+    const ContactPoint& point = m.points[k];
+    ContactPointState& q = c.points[k];
+    q.id = point.id;
+    q.depth = point.depth;
+    q.arm_a = point.position - s.position[a.body];
+    q.arm_b = point.position - s.position[b.body];
+    // The deepest points of each shape inside the other, fixed in their bodies, measure the
+    // penetration again after the bodies move (position correction).
+    const Vec2 deepest_a = point.position - 0.5 * point.depth * m.normal;
+    const Vec2 deepest_b = point.position + 0.5 * point.depth * m.normal;
+    q.local_anchor_a = to_body_axes(deepest_a - s.position[a.body], s.angle[a.body]);
+    q.local_anchor_b = to_body_axes(deepest_b - s.position[b.body], s.angle[b.body]);
+  }
+  return c;
+}
+
 void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
                                        const BodyShapes& shapes,
                                        const std::vector<WorldShape>& world, const MotionState& s,
@@ -48,38 +78,15 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
   for (const ProxyPair& p : pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);
     if (m.count == 0) continue;
-    const ShapeRecord& a = shapes[p.first];
-    const ShapeRecord& b = shapes[p.second];
-    Contact c{p.first,
-              p.second,
-              a.body,
-              b.body,
-              m.normal,
-              m.count,
-              {},
-              std::max(a.restitution, b.restitution),
-              std::sqrt(a.friction * b.friction)};
+    Contact c = make_contact(p, shapes, m, s);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
     while (old != previous.end() && old->key() < c.key()) ++old;
-    const bool matched = old != previous.end() && old->key() == c.key();
-    for (int k = 0; k < m.count; ++k) {
-      const ContactPoint& point = m.points[k];
-      ContactPointState& q = c.points[k];
-      q.id = point.id;
-      q.depth = point.depth;
-      q.arm_a = point.position - s.position[a.body];
-      q.arm_b = point.position - s.position[b.body];
-      // The deepest points of each shape inside the other, fixed in their bodies, measure the
-      // penetration again after the bodies move (position correction).
-      const Vec2 deepest_a = point.position - 0.5 * point.depth * m.normal;
-      const Vec2 deepest_b = point.position + 0.5 * point.depth * m.normal;
-      q.local_anchor_a = to_body_axes(deepest_a - s.position[a.body], s.angle[a.body]);
-      q.local_anchor_b = to_body_axes(deepest_b - s.position[b.body], s.angle[b.body]);
-      if (matched) {
+    if (old != previous.end() && old->key() == c.key()) {
+      for (int k = 0; k < c.count; ++k) {
         for (int j = 0; j < old->count; ++j) {
-          if (old->points[j].id == q.id) {
-            q.normal_impulse = impulse_scale * old->points[j].normal_impulse;
-            q.tangent_impulse = impulse_scale * old->points[j].tangent_impulse;
+          if (old->points[j].id == c.points[k].id) {
+            c.points[k].normal_impulse = impulse_scale * old->points[j].normal_impulse;
+            c.points[k].tangent_impulse = impulse_scale * old->points[j].tangent_impulse;
           }
         }
       }

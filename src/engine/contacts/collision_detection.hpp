@@ -11,6 +11,12 @@
 
 namespace gp {
 
+/// The contact constraint of the shapes of `pair`, whose manifold `m` was found in state `s`:
+/// combined surface properties, and per point its depth, arms and the anchors that measure the
+/// overlap again after the bodies move. Impulses start at 0.
+Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                     const MotionState& s);
+
 class CollisionDetection {
  public:
   /// `margin` [m]: shapes this far apart already get (speculative) contact points.

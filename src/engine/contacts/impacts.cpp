@@ -8,6 +8,7 @@
 
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
+#include "engine/contacts/collision_detection.hpp"
 #include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/transform.hpp"
 #include "gamephysics/models/dd/angular_acceleration.hpp"
@@ -115,20 +116,7 @@ void resolve_impacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shap
         to_world(a.local, Transform(s.position[a.body], s.angle[a.body])),
         to_world(b.local, Transform(s.position[b.body], s.angle[b.body])), settings.contact_margin);
     if (m.count == 0) continue;
-    Contact c{p.first,
-              p.second,
-              a.body,
-              b.body,
-              m.normal,
-              m.count,
-              {},
-              std::max(a.restitution, b.restitution),
-              std::sqrt(a.friction * b.friction)};
-    for (int k = 0; k < m.count; ++k) {
-      c.points[k].id = m.points[k].id;
-      c.points[k].arm_a = m.points[k].position - s.position[a.body];
-      c.points[k].arm_b = m.points[k].position - s.position[b.body];
-    }
+    const Contact c = make_contact(p, shapes, m, s);
     contacts.push_back(c);
   }
   const auto approach = [&s](const Contact& c, const ContactPointState& p) {
