@@ -37,6 +37,9 @@ struct Contact {
   std::array<ContactPointState, 2> points;
   double restitution;  ///< C_R = max of the two shapes'
   double friction;     ///< μ = √(μ_a μ_b)
+  /// 1/kg: change of v_rel·n at one point per unit normal impulse at the other (two points only);
+  /// the diagonal terms are 1 / normal_mass.
+  double coupling = 0.0;
 
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
   std::uint64_t key() const { return (std::uint64_t{shape_a} << 32) | shape_b; }

@@ -48,12 +48,58 @@ Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const Con
       dd::point_velocity(s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b));
 }
 
+namespace {
+
+// Both normal constraints of an edge-to-edge contact at once, as a 2 × 2 linear complementarity
+// problem solved by enumerating its four cases (Box2D's block solver): solving the two points one
+// after the other leaves a residual that turns a tall stack. Returns false, leaving the points to
+// the one-by-one solver, when the two points are nearly redundant (ill-conditioned matrix).
+bool solve_pair(Contact& c, const BodyInertia& inertia, MotionState& s) {
+  ContactPointState& p = c.points[0];
+  ContactPointState& q = c.points[1];
+  const double k11 = 1.0 / p.normal_mass, k22 = 1.0 / q.normal_mass, k12 = c.coupling;
+  const double determinant = k11 * k22 - k12 * k12;
+  if (k11 * k11 >= 1000.0 * determinant) return false;
+  const Vec2 old{p.normal_impulse, q.normal_impulse};
+  // Velocities the constraints must reach, less what the impulses already applied give.
+  const Vec2 b{contact_relative_velocity(s, c, p).dot(c.normal) - p.target_normal_velocity -
+                   (k11 * old.x() + k12 * old.y()),
+               contact_relative_velocity(s, c, q).dot(c.normal) - q.target_normal_velocity -
+                   (k12 * old.x() + k22 * old.y())};
+  Vec2 x;
+  if (x = Vec2{(-k22 * b.x() + k12 * b.y()) / determinant,
+               (k12 * b.x() - k11 * b.y()) / determinant};
+      x.x() >= 0.0 && x.y() >= 0.0) {
+  } else if (x = Vec2{-b.x() / k11, 0.0}; x.x() >= 0.0 && k12 * x.x() + b.y() >= 0.0) {
+  } else if (x = Vec2{0.0, -b.y() / k22}; x.y() >= 0.0 && k12 * x.y() + b.x() >= 0.0) {
+  } else if (x = Vec2::Zero(); b.x() >= 0.0 && b.y() >= 0.0) {
+  } else {
+    return false;
+  }
+  apply(inertia, c, p, (x.x() - old.x()) * c.normal, s);
+  apply(inertia, c, q, (x.y() - old.y()) * c.normal, s);
+  p.normal_impulse = x.x();
+  q.normal_impulse = x.y();
+  return true;
+}
+
+}  // namespace
+
 void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
   for (Contact& c : contacts) {
     for (int k = 0; k < c.count; ++k) {
       ContactPointState& p = c.points[k];
       p.normal_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, c.normal);
+      if (k == 1) {
+        // The off-diagonal term of the two points' effective-mass matrix, whose diagonal is
+        // GD:impulse's denominator: arms of point 0 against arms of point 1.
+        const ContactPointState& q = c.points[0];
+        c.coupling =
+            inertia.inverse_mass[c.body_a] + inertia.inverse_mass[c.body_b] +
+            inertia.inverse_moment[c.body_a] * cross(q.arm_a, c.normal) * cross(p.arm_a, c.normal) +
+            inertia.inverse_moment[c.body_b] * cross(q.arm_b, c.normal) * cross(p.arm_b, c.normal);
+      }
       p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent_of(c.normal));
       const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
@@ -80,17 +126,21 @@ void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia
                       MotionState& s) {
   for (int i = 0; i < iterations; ++i) {
     for (Contact& c : contacts) {
-      const Vec2 tangent = tangent_of(c.normal);
-      for (int k = 0; k < c.count; ++k) {
-        ContactPointState& p = c.points[k];
-        if (c.friction > 0.0) {
-          // Friction first, so the normal constraint, solved last, is the one met exactly.
+      if (c.friction > 0.0) {
+        // Friction first, so the normal constraints, solved last, are the ones met exactly.
+        const Vec2 tangent = tangent_of(c.normal);
+        for (int k = 0; k < c.count; ++k) {
+          ContactPointState& p = c.points[k];
           const double limit = c.friction * p.normal_impulse;
           const double change = -p.tangent_mass * contact_relative_velocity(s, c, p).dot(tangent);
           const double total = std::clamp(p.tangent_impulse + change, -limit, limit);
           apply(inertia, c, p, (total - p.tangent_impulse) * tangent, s);
           p.tangent_impulse = total;
         }
+      }
+      if (c.count == 2 && solve_pair(c, inertia, s)) continue;
+      for (int k = 0; k < c.count; ++k) {
+        ContactPointState& p = c.points[k];
         const double change = p.normal_mass * (p.target_normal_velocity -
                                                contact_relative_velocity(s, c, p).dot(c.normal));
         const double total = std::max(p.normal_impulse + change, 0.0);
