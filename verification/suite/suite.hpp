@@ -39,6 +39,8 @@ std::vector<Check> convergence_checks(const std::vector<NamedScene>& scenes, con
 std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
                                        const SuiteOptions& o);
 std::vector<Check> hard_case_checks(const SuiteOptions& o);
+std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
+                               CsvFiles& data);
 std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
                                          const SuiteOptions& o, CsvFiles& data);
 

@@ -1,0 +1,81 @@
+// Cross-validation with the engines people use (NFR:Correctness): every scene within the oracle's
+// domain run by Chipmunk2D and Box2D at the same step as ours, each against the oracle.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine/output/output_times.hpp"
+#include "verification/peers/peer_run.hpp"
+#include "verification/peers/peer_scene.hpp"
+#include "verification/peers/peer_world.hpp"
+#include "verification/suite/oracle_trajectory.hpp"
+#include "verification/suite/suite.hpp"
+
+namespace gp::verification {
+
+namespace {
+
+Trajectory run_peer_trajectory(peers::PeerEngine engine, const Scene& scene) {
+  Scene stepped = scene;
+  stepped.output_dt = scene.dt;
+  const auto world = peers::make_peer(engine, peers::peer_scene(stepped));
+  Trajectory run;
+  peers::run_peer(*world, stepped, [&](double t) {
+    run.times.push_back(t);
+    std::vector<BodyState> states;
+    for (BodyId id = 0; id < world->body_count(); ++id) states.push_back(world->state(id));
+    run.states.push_back(std::move(states));
+  });
+  return run;
+}
+
+std::string describe(const Differences& d) {
+  return "position " + figure(d.position) + " m, orientation " + figure(d.orientation) +
+         " rad, velocity " + figure(d.velocity) + " m/s";
+}
+
+}  // namespace
+
+std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
+                               CsvFiles& data) {
+  CheckList list("peers against the oracle");
+  std::ostringstream csv;
+  csv << "scene,engine,dt,position,orientation,velocity\n";
+  for (const auto& [name, original] : scenes) {
+    Scene scene = original;
+    if (o.quick) scene.duration = std::min(scene.duration, 1.0);
+    const OutputTimes instants(scene.duration, scene.dt);
+    std::vector<double> times;
+    for (std::size_t k = 0; k < instants.size(); ++k) times.push_back(instants[k]);
+    OracleOptions options;
+    options.rtol = options.atol = scene.settings.G ? 1e-14 : 1e-12;
+    Trajectory oracle;
+    try {
+      oracle = run_oracle_trajectory(scene, times, options);
+    } catch (const OracleDomainError&) {
+      continue;  // no reference: the accuracy section says why
+    }
+    if (o.progress) *o.progress << "  peers: " << name << "\n";
+    const Differences ours =
+        compare(run_engine(scene, scene.settings.integrator, scene.dt), oracle);
+    std::string measured =
+        "ours (" + std::string(integrator_name(scene.settings.integrator)) + "): " + describe(ours);
+    double best_peer = INFINITY;
+    for (const auto engine : {peers::PeerEngine::Chipmunk, peers::PeerEngine::Box2d}) {
+      const Differences d = compare(run_peer_trajectory(engine, scene), oracle);
+      measured += "; " + std::string(peers::engine_name(engine)) + ": " + describe(d);
+      best_peer = std::min(best_peer, d.position);
+      csv << name << "," << peers::engine_name(engine) << "," << scene.dt << "," << d.position
+          << "," << d.orientation << "," << d.velocity << "\n";
+    }
+    csv << name << ",ours," << scene.dt << "," << ours.position << "," << ours.orientation << ","
+        << ours.velocity << "\n";
+    list.check(name + ", dt = " + figure(scene.dt) + " s", "NFR:Correctness", measured,
+               "ours at least as accurate as the better peer (position), to rounding (1e-12 m)",
+               ours.position <= std::max(best_peer, 1e-12));
+  }
+  data.emplace_back("peers.csv", csv.str());
+  return list.rows();
+}
+
+}  // namespace gp::verification
