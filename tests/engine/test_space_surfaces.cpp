@@ -11,11 +11,15 @@ using Catch::Matchers::WithinRel;
 namespace {
 constexpr double g = 9.81;
 
-// A unit box sliding at v0 on a static ground; returns the distance it slides before stopping.
-double sliding_distance(double friction_box, double friction_ground, double v0) {
+gp::Settings with_gravity() {
   gp::Settings settings;
   settings.gravity = {0.0, -g};
-  gp::Space space(settings);
+  return settings;
+}
+
+// A unit box resting on a wide static ground box and moving at v0 along it; returns the box.
+gp::BodyId add_box_on_ground(gp::Space& space, double friction_box, double friction_ground,
+                             double v0) {
   gp::BodyDef ground;
   ground.name = "ground";
   ground.type = gp::BodyType::Static;
@@ -27,7 +31,13 @@ double sliding_distance(double friction_box, double friction_ground, double v0) 
   box.position = {0.0, 0.5};
   box.velocity = {v0, 0.0};
   box.shapes.push_back({gp::Shape::box(1.0, 1.0), 0.0, friction_box});
-  const auto id = space.add_body(box);
+  return space.add_body(box);
+}
+
+// The distance the box of add_box_on_ground slides before stopping.
+double sliding_distance(double friction_box, double friction_ground, double v0) {
+  gp::Space space(with_gravity());
+  const auto id = add_box_on_ground(space, friction_box, friction_ground, v0);
   for (int k = 0; k < 240; ++k) space.step(1.0 / 120);
   CHECK_THAT(space.state(id).velocity.norm(), WithinAbs(0.0, 1e-6));  // it has stopped
   CHECK_THAT(space.state(id).position.y(), WithinAbs(0.5, 1e-3));     // and stayed on top
@@ -43,31 +53,18 @@ TEST_CASE("Friction stops a sliding box after v₀² / (2 μ g)",
   CHECK_THAT(sliding_distance(0.2, 0.8, 3.0), WithinRel(9.0 / (2 * 0.4 * g), 0.02));
 }
 
-TEST_CASE("A frictionless box keeps sliding", "[FR:Input-Surface-Properties][A:dampingInvolvement]") {
-  gp::Settings settings;
-  settings.gravity = {0.0, -g};
-  gp::Space space(settings);
-  gp::BodyDef ground;
-  ground.name = "ground";
-  ground.type = gp::BodyType::Static;
-  ground.position = {0.0, -0.5};
-  ground.shapes.push_back({gp::Shape::box(100.0, 1.0), 0.0, 0.8});
-  space.add_body(ground);
-  gp::BodyDef box;
-  box.name = "box";
-  box.position = {0.0, 0.5};
-  box.velocity = {3.0, 0.0};
-  box.shapes.push_back({gp::Shape::box(1.0, 1.0), 0.0, 0.0});  // √(0 · 0.8) = 0
-  const auto id = space.add_body(box);
+TEST_CASE("A frictionless box keeps sliding",
+          "[FR:Input-Surface-Properties][A:dampingInvolvement]") {
+  gp::Space space(with_gravity());
+  const auto id = add_box_on_ground(space, 0.0, 0.8, 3.0);  // μ = √(0 · 0.8) = 0
   for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
   CHECK_THAT(space.state(id).velocity.x(), WithinAbs(3.0, 1e-9));
   CHECK_THAT(space.state(id).position.x(), WithinAbs(6.0, 1e-6));
 }
 
-TEST_CASE("The bouncier surface sets the restitution of a contact", "[FR:Input-Surface-Properties]") {
-  gp::Settings settings;
-  settings.gravity = {0.0, -g};
-  gp::Space space(settings);
+TEST_CASE("The bouncier surface sets the restitution of a contact",
+          "[FR:Input-Surface-Properties]") {
+  gp::Space space(with_gravity());
   gp::BodyDef ground;
   ground.name = "ground";
   ground.type = gp::BodyType::Static;
