@@ -90,9 +90,16 @@ void Space::step(double dt) {
   validate_step(dt, "dt");
   impacts_.clear();
   impacts_this_step_ = 0;
-  double remaining = dt;
-  // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
-  while (remaining > 0.0) remaining -= substep(remaining);
+  // Local impacts need ballistic paths that the integrator follows exactly.
+  const bool local =
+      collides_ && forces_.constant() && integrator_->exact_for_constant_acceleration();
+  if (!local || !local_step(dt)) {
+    impacts_.clear();
+    impacts_this_step_ = 0;
+    double remaining = dt;
+    // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
+    while (remaining > 0.0) remaining -= substep(remaining);
+  }
   for (BodyId j : forces_.bodies()) {
     if (!state_.position[j].allFinite() || !state_.velocity[j].allFinite() ||
         !std::isfinite(state_.angle[j]) || !std::isfinite(state_.angular_velocity[j])) {
@@ -110,40 +117,56 @@ void Space::move_kinematic(double h) {
   }
 }
 
-void Space::apply_impulse_displacement(double h) {
-  const double share = integrator_->impulse_position_share() * h;
+const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
+  shapes_.place(start_, world_start_);
+  // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
+  ballistic_end_ = start_;
   for (BodyId j : forces_.bodies()) {
-    state_.position[j] += share * (state_.velocity[j] - trial_.velocity[j]);
-    state_.angle[j] = dd::rotated_orientation(
-        state_.angle[j], share * (state_.angular_velocity[j] - trial_.angular_velocity[j]));
+    ballistic_end_.position[j] = motion.position(j, h);
+    ballistic_end_.angle[j] = motion.angle(j, h);
   }
+  for (BodyId k : kinematic_) {
+    ballistic_end_.position[k] = start_.position[k] + h * start_.velocity[k];
+    ballistic_end_.angle[k] = start_.angle[k] + h * start_.angular_velocity[k];
+  }
+  shapes_.place(ballistic_end_, world_end_);
+  return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
+}
+
+bool Space::local_step(double h) {
+  start_ = state_;
+  start_acceleration_.resize(state_.position.size());
+  forces_.evaluate(time_, start_, start_acceleration_);
+  const Ballistic motion{start_, start_acceleration_};
+  const std::vector<ProxyPair>& pairs = sweep(h, motion);
+  const double scale = previous_h_ > 0.0 ? std::min(1.0, h / previous_h_) : 0.0;
+  detection_.find_contacts(pairs, shapes_, world_start_, start_, previous_contacts_, scale,
+                           contacts_);
+  local_impacts_.classify(pairs, world_start_, world_end_, motion, h,
+                          impacts_this_step_ < settings_.max_impacts_per_step, contacts_);
+  local_impacts_.hand_over(world_start_, start_, h, contacts_, speculative_contacts_);
+  if (!local_impacts_.resolve(time_, h, start_, start_acceleration_, world_start_, world_end_,
+                              impacts_this_step_, impacts_)) {
+    return false;
+  }
+  state_ = start_;
+  advance(h);
+  return true;
 }
 
 double Space::substep(double h) {
   start_ = state_;
   const std::vector<ProxyPair>* impact_pairs = nullptr;
   if (collides_) {
-    shapes_.place(start_, world_start_);
     start_acceleration_.resize(state_.position.size());
     forces_.evaluate(time_, start_, start_acceleration_);
     const Ballistic motion{start_, start_acceleration_};
-    // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
-    ballistic_end_ = start_;
-    for (BodyId j : forces_.bodies()) {
-      ballistic_end_.position[j] = motion.position(j, h);
-      ballistic_end_.angle[j] = motion.angle(j, h);
-    }
-    for (BodyId k : kinematic_) {
-      ballistic_end_.position[k] = start_.position[k] + h * start_.velocity[k];
-      ballistic_end_.angle[k] = start_.angle[k] + h * start_.angular_velocity[k];
-    }
-    shapes_.place(ballistic_end_, world_end_);
-    const auto& pairs = detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
+    const auto& pairs = sweep(h, motion);
     contact_pairs_.assign(pairs.begin(), pairs.end());
     if (impacts_this_step_ < settings_.max_impacts_per_step) {
       const auto tau = impact_search_.earliest(
-          contact_pairs_, shapes_, world_start_, world_end_, motion, h, settings_.linear_slop,
-          settings_.restitution_threshold, settings_.contact_margin);
+          contact_pairs_, shapes_, world_start_, world_end_, motion, h,
+          {settings_.linear_slop, settings_.restitution_threshold, settings_.contact_margin});
       if (tau && *tau < h) {
         h = *tau;
         impact_pairs = &impact_search_.touching();
@@ -161,27 +184,40 @@ double Space::substep(double h) {
     detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, previous_contacts_,
                              scale, contacts_);
   }
+  advance(h);
+  if (impact_pairs) {
+    resolve_impacts(*impact_pairs, shapes_, inertia_, settings_, time_, state_, impact_scratch_,
+                    impacts_);
+    ++impacts_this_step_;
+  }
+  return h;
+}
+
+void Space::advance(double h) {
   integrator_->advance(forces_, time_, h, state_);
   move_kinematic(h);
   if (!contacts_.empty()) {
-    trial_ = state_;
     prepare_contacts(contacts_, inertia_, start_, h, settings_);
     warm_start(contacts_, inertia_, state_);
     solve_velocities(contacts_, inertia_, settings_.velocity_iterations, state_);
     apply_restitution(contacts_, inertia_, state_);
-    apply_impulse_displacement(h);
+    move_by_contact_impulses(contacts_, inertia_, integrator_->impulse_position_share() * h,
+                             state_);
+  }
+  if (!speculative_contacts_.empty()) {
+    solve_speculative(contacts_, speculative_contacts_, inertia_, start_, h, settings_, state_);
+    correct_positions(speculative_contacts_, inertia_, settings_.position_iterations,
+                      settings_.linear_slop, state_, rotations_);
+    speculative_contacts_.clear();
+  }
+  if (!contacts_.empty()) {
     correct_positions(contacts_, inertia_, settings_.position_iterations, settings_.linear_slop,
                       state_, rotations_);
   }
   time_ += h;
-  if (impact_pairs) {
-    resolve_impacts(*impact_pairs, shapes_, inertia_, settings_, time_, state_, impacts_);
-    ++impacts_this_step_;
-  }
   std::swap(previous_contacts_, contacts_);
   contacts_.clear();
   previous_h_ = h;
-  return h;
 }
 
 }  // namespace gp

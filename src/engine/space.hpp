@@ -12,6 +12,7 @@
 #include "engine/contacts/collision_detection.hpp"
 #include "engine/contacts/contact_solver.hpp"
 #include "engine/contacts/impacts.hpp"
+#include "engine/contacts/local_impacts.hpp"
 #include "engine/dynamics/force_model.hpp"
 #include "engine/dynamics/integrator.hpp"
 #include "engine/pipeline.hpp"
@@ -67,9 +68,16 @@ class Space {
  private:
   /// Advances by h, or by less when an impact comes first; returns the time advanced [s].
   double substep(double h);
+  /// Advances by h in one piece, resolving impacts for their own bodies only (LocalImpacts);
+  /// false, having changed nothing, when the step must be sub-stepped instead.
+  bool local_step(double h);
+  /// Places the shapes at the start of a step of h and at the end of their ballistic paths, and
+  /// returns the candidate pairs of the boxes swept between.
+  const std::vector<ProxyPair>& sweep(double h, const Ballistic& motion);
+  /// Integrates over h from state_, then solves contacts_ (and speculative_contacts_) and keeps
+  /// contacts_ for warm starting.
+  void advance(double h);
   void move_kinematic(double h);
-  /// Adds the share of the contact impulses' velocity change that moves bodies within the step.
-  void apply_impulse_displacement(double h);
 
   Settings settings_;
   double time_ = 0.0;
@@ -86,16 +94,18 @@ class Space {
   BodyShapes shapes_;
   CollisionDetection detection_;
   ImpactSearch impact_search_;
+  LocalImpacts local_impacts_{shapes_, inertia_, dynamic_, settings_};
   std::vector<Impact> impacts_;
   int impacts_this_step_ = 0;
   double previous_h_ = 0.0;
   // Scratch kept between steps so that a step does not allocate once the scene is warmed up.
-  MotionState start_, ballistic_end_, trial_;
+  MotionState start_, ballistic_end_;
   Accelerations start_acceleration_;
   std::vector<WorldShape> world_start_, world_end_;
-  std::vector<Contact> contacts_, previous_contacts_;
+  std::vector<Contact> contacts_, previous_contacts_, impact_scratch_;
+  std::vector<Contact> speculative_contacts_;  // impacts on resting bodies, this step only
   std::vector<ProxyPair> contact_pairs_;
-  std::vector<Transform> rotations_;
+  RotationCache rotations_;
 };
 
 }  // namespace gp

@@ -4,6 +4,18 @@
 
 namespace gp {
 
+void BodyShapes::add(ShapeRecord record) {
+  while (first_.size() <= record.body) first_.push_back(static_cast<std::uint32_t>(size()));
+  records_.push_back(std::move(record));
+}
+
+std::ranges::iota_view<std::uint32_t, std::uint32_t> BodyShapes::of_body(BodyId body) const {
+  const auto end = static_cast<std::uint32_t>(size());
+  const std::uint32_t first = body < first_.size() ? first_[body] : end;
+  const std::uint32_t last = body + 1 < first_.size() ? first_[body + 1] : end;
+  return {first, last};
+}
+
 void BodyShapes::place(const MotionState& s, std::vector<WorldShape>& world) const {
   const bool first = world.size() != records_.size();
   if (first) world.resize(records_.size());

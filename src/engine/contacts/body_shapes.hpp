@@ -2,6 +2,7 @@
 // Every shape of the space with its body and surface, and where each is in the world.
 
 #include <cstdint>
+#include <ranges>
 #include <vector>
 
 #include "engine/body.hpp"
@@ -22,15 +23,20 @@ struct ShapeRecord {
 /// The shapes of a space, and their world placement for a given motion state.
 class BodyShapes {
  public:
-  void add(ShapeRecord record) { records_.push_back(std::move(record)); }
+  /// Adds a shape; shapes are added body by body, in increasing body order.
+  void add(ShapeRecord record);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
+
+  /// The indices of the shapes of `body`.
+  std::ranges::iota_view<std::uint32_t, std::uint32_t> of_body(BodyId body) const;
 
   /// Places every moving shape by its body's state (static shapes once, on the first call).
   void place(const MotionState& s, std::vector<WorldShape>& world) const;
 
  private:
   std::vector<ShapeRecord> records_;
+  std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 
 }  // namespace gp

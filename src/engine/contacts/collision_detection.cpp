@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "engine/collision/narrowphase.hpp"
 #include "engine/geometry/transform.hpp"
@@ -9,10 +11,16 @@
 namespace gp {
 
 namespace {
-// A world direction in the axes of a body turned by `angle`.
-Vec2 to_body_axes(const Vec2& v, double angle) {
-  return Transform(Vec2::Zero(), -angle).rotate(v);
+
+// Where shape `shape` of a body at `frame` reaches deepest into the other shape, as an anchor in
+// the body's frame plus a radius along the normal away from the shape (see ContactPointState).
+std::pair<Vec2, double> anchor(const Shape& shape, const Transform& frame, const Vec2& deepest) {
+  if (const auto* circle = std::get_if<Circle>(&shape.geometry())) {
+    return {circle->center, circle->radius};
+  }
+  return {frame.unrotate(deepest - frame.position()), 0.0};
 }
+
 }  // namespace
 
 const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
@@ -51,6 +59,13 @@ Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const Cont
             {},
             std::max(a.restitution, b.restitution),
             std::sqrt(a.friction * b.friction)};
+  // A disc's anchor needs no frame: spare its trigonometry.
+  const auto frame_of = [&s](const ShapeRecord& r) {
+    return r.local.kind() == ShapeKind::kCircle ? Transform()
+                                                : Transform(s.position[r.body], s.angle[r.body]);
+  };
+  const Transform frame_a = frame_of(a);
+  const Transform frame_b = frame_of(b);
   for (int k = 0; k < m.count; ++k) {
     const ContactPoint& point = m.points[k];
     ContactPointState& q = c.points[k];
@@ -60,10 +75,10 @@ Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const Cont
     q.arm_b = point.position - s.position[b.body];
     // The deepest points of each shape inside the other, fixed in their bodies, measure the
     // penetration again after the bodies move (position correction).
-    const Vec2 deepest_a = point.position - 0.5 * point.depth * m.normal;
-    const Vec2 deepest_b = point.position + 0.5 * point.depth * m.normal;
-    q.local_anchor_a = to_body_axes(deepest_a - s.position[a.body], s.angle[a.body]);
-    q.local_anchor_b = to_body_axes(deepest_b - s.position[b.body], s.angle[b.body]);
+    std::tie(q.local_anchor_a, q.anchor_radius_a) =
+        anchor(a.local, frame_a, point.position - 0.5 * point.depth * m.normal);
+    std::tie(q.local_anchor_b, q.anchor_radius_b) =
+        anchor(b.local, frame_b, point.position + 0.5 * point.depth * m.normal);
   }
   return c;
 }

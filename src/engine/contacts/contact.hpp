@@ -4,18 +4,29 @@
 #include <array>
 #include <cstdint>
 
+#include "engine/collision/broadphase.hpp"
 #include "engine/collision/contact.hpp"
 #include "engine/dynamics/force_model.hpp"
 
 namespace gp {
 
+/// The key of the contact a pair of shapes makes (Contact::key).
+inline std::uint64_t key_of(const ProxyPair& pair) {
+  return (std::uint64_t{pair.first} << 32) | pair.second;
+}
+
 /// One point of a contact constraint.
 struct ContactPointState {
   FeatureId id;
-  Vec2 arm_a = Vec2::Zero();            ///< m, from A's centre of mass to the point
-  Vec2 arm_b = Vec2::Zero();            ///< m, from B's centre of mass to the point
-  Vec2 local_anchor_a = Vec2::Zero();   ///< m, A's deepest point, in A's frame
-  Vec2 local_anchor_b = Vec2::Zero();   ///< m, B's deepest point, in B's frame
+  Vec2 arm_a = Vec2::Zero();  ///< m, from A's centre of mass to the point
+  Vec2 arm_b = Vec2::Zero();  ///< m, from B's centre of mass to the point
+  /// m, in A's frame: A's deepest point is this point plus anchor_radius_a along −normal (a
+  /// circle's centre and radius, so that a disc's turning does not move its deepest point).
+  Vec2 local_anchor_a = Vec2::Zero();
+  /// m, in B's frame: B's deepest point is this point plus anchor_radius_b along +normal.
+  Vec2 local_anchor_b = Vec2::Zero();
+  double anchor_radius_a = 0.0;         ///< m
+  double anchor_radius_b = 0.0;         ///< m
   double depth = 0.0;                   ///< m, overlap at detection (negative: still apart)
   double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
   double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
@@ -42,7 +53,7 @@ struct Contact {
   double coupling = 0.0;
 
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
-  std::uint64_t key() const { return (std::uint64_t{shape_a} << 32) | shape_b; }
+  std::uint64_t key() const { return key_of({shape_a, shape_b}); }
 };
 
 }  // namespace gp

@@ -4,6 +4,7 @@
 // point until all contacts agree), friction where μ > 0 (LC:Include-Dampening), and penetration
 // removal by moving positions only, which adds no energy.
 
+#include <limits>
 #include <vector>
 
 #include "engine/contacts/contact.hpp"
@@ -45,12 +46,48 @@ void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia
 /// struck against a wall) bounce off both at once, which creates energy.
 void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s);
 
+/// Moves and turns the bodies by the velocity changes of the contacts' accumulated impulses
+/// (DD:impulseV, DD:torque) kept up for `duration` [s]: share × h for impulses that act over a
+/// step of h like forces (the integrator's impulse_position_share). A negative duration takes a
+/// displacement back.
+void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+                              double duration, MotionState& s);
+
+/// Impacts the contact solver takes on after the resting contacts are solved: `speculative`
+/// points, still apart at the start of the step of h [s], whose bodies also rest on others (see
+/// LocalImpacts). They are solved together with `resting` for `iterations` passes, and bounce
+/// by C_R after; the impulses this adds act from the impact on, so they move the bodies by
+/// h × Δv, which closes each gap exactly, rather than by the resting share, which would leave a
+/// fast body overlapping and press the body under it into the ground.
+void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& speculative,
+                       const BodyInertia& inertia, const MotionState& before, double h,
+                       const Settings& settings, MotionState& s);
+
+/// The rotations of bodies by their current angles, each recomputed only when asked for after
+/// its body turned: most contact points of discs need none.
+class RotationCache {
+ public:
+  /// Forgets every rotation; sized for `bodies` bodies.
+  void reset(std::size_t bodies);
+  /// `v` (body axes) turned by `angle` [rad], the current angle of `body`, into world axes.
+  Vec2 rotate(BodyId body, double angle, const Vec2& v) {
+    if (v == Vec2::Zero()) return v;  // a disc's centre: no trigonometry
+    if (angle_[body] != angle) {
+      angle_[body] = angle;
+      rotation_[body] = Transform(Vec2::Zero(), angle);
+    }
+    return rotation_[body].rotate(v);
+  }
+
+ private:
+  std::vector<double> angle_;  // rad, the angle each rotation is for; NaN: none yet
+  std::vector<Transform> rotation_;
+};
+
 /// `iterations` passes that move and turn bodies apart (positions only) where the contact points
 /// overlap by more than `slop` [m], removing a fifth of the excess per pass (Baumgarte's 0.2).
-/// `rotations` is scratch space for each body's rotation, kept by the caller so that a step does
-/// not allocate.
+/// `rotations` is scratch, kept by the caller so that a step does not allocate.
 void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
-                       int iterations, double slop, MotionState& s,
-                       std::vector<Transform>& rotations);
+                       int iterations, double slop, MotionState& s, RotationCache& rotations);
 
 }  // namespace gp

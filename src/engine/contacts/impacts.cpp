@@ -22,23 +22,25 @@
 namespace gp {
 
 Vec2 Ballistic::position(BodyId body, double tau) const {
-  const Vec2 mean_velocity = start.velocity[body] + dd::velocity_change_from_acceleration(
-                                                        acceleration.linear[body], tau / 2);
   return dd::displaced_position(start.position[body],
-                                dd::displacement_from_velocity(mean_velocity, tau));
+                                dd::displacement_from_velocity(velocity(body, tau / 2), tau));
 }
 
 double Ballistic::angle(BodyId body, double tau) const {
-  const double mean_omega =
-      start.angular_velocity[body] +
-      dd::angular_velocity_change_from_acceleration(acceleration.angular[body], tau / 2);
-  return dd::rotated_orientation(start.angle[body],
-                                 dd::angular_displacement_from_velocity(mean_omega, tau));
+  return dd::rotated_orientation(start.angle[body], dd::angular_displacement_from_velocity(
+                                                        angular_velocity(body, tau / 2), tau));
 }
 
-namespace {
+Vec2 Ballistic::velocity(BodyId body, double tau) const {
+  return start.velocity[body] +
+         dd::velocity_change_from_acceleration(acceleration.linear[body], tau);
+}
 
-// Fastest any point of the shape can move during a step of h [s], a bound [m/s].
+double Ballistic::angular_velocity(BodyId body, double tau) const {
+  return start.angular_velocity[body] +
+         dd::angular_velocity_change_from_acceleration(acceleration.angular[body], tau);
+}
+
 double speed_bound(const ShapeRecord& r, const Ballistic& m, double h) {
   const BodyId b = r.body;
   return m.start.velocity[b].norm() + m.acceleration.linear[b].norm() * h +
@@ -46,11 +48,11 @@ double speed_bound(const ShapeRecord& r, const Ballistic& m, double h) {
              reach(r.local);
 }
 
-}  // namespace
+namespace {
 
-std::optional<double> ImpactSearch::time_of_impact(const ShapeRecord& a, const ShapeRecord& b,
-                                                   double d0, double d1, const Ballistic& motion,
-                                                   double h) const {
+// τ in (t0, h] where the shapes first touch, given their signed distances d0 at t0 and d1 at h.
+std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, double d0, double d1,
+                                  const Ballistic& motion, double t0, double h) {
   const auto distance = [&](double tau) {
     return signed_distance(
         to_world(a.local, Transform(motion.position(a.body, tau), motion.angle(a.body, tau))),
@@ -60,40 +62,52 @@ std::optional<double> ImpactSearch::time_of_impact(const ShapeRecord& a, const S
     // Bracketed: TOMS 748 converges superlinearly on the smooth distance of ballistic motion.
     std::uintmax_t iterations = 100;
     const auto [lo, hi] = boost::math::tools::toms748_solve(
-        distance, 0.0, h, d0, d1, boost::math::tools::eps_tolerance<double>(50), iterations);
+        distance, t0, h, d0, d1, boost::math::tools::eps_tolerance<double>(50), iterations);
     (void)hi;
     return lo;
   }
-  // Apart at both ends: they can only have met in between if they could close d0 + d1 in h.
+  // Apart at both ends: they can only have met in between if they could close d0 + d1 in time.
   const double bound = speed_bound(a, motion, h) + speed_bound(b, motion, h);
-  if (bound * h < d0 + d1) return std::nullopt;
+  if (bound * (h - t0) < d0 + d1) return std::nullopt;
   // Conservative advancement: never step further than the gap could close.
-  constexpr double kTouch = 1e-9;  // m
-  double tau = 0.0, d = d0;
-  for (int i = 0; i < 100; ++i) {
+  // Down to 1e-12 m, so that the impact's position is as exact as a bracketed root's; a slow,
+  // grazing approach that stops short of that within the passes still counts within 1e-9 m.
+  constexpr double kTouch = 1e-12, kNear = 1e-9;  // m
+  double tau = t0, d = d0;
+  for (int i = 0; i < 200; ++i) {
     tau += d / bound;
     if (tau >= h) return std::nullopt;
     d = distance(tau);
     if (d <= kTouch) return tau;
   }
-  return std::nullopt;
+  return d <= kNear ? std::optional<double>(tau) : std::nullopt;
+}
+
+}  // namespace
+
+std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b, const WorldShape& a0,
+                                  const WorldShape& b0, const WorldShape& a1, const WorldShape& b1,
+                                  const Ballistic& motion, double t0, double h,
+                                  const ImpactFilter& filter) {
+  const double d0 = signed_distance(a0, b0);
+  if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
+  const double d1 = signed_distance(a1, b1);
+  if (d0 < filter.margin && d0 - d1 < filter.min_speed * (h - t0)) return std::nullopt;
+  return first_touch(a, b, d0, d1, motion, t0, h);
 }
 
 std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs,
                                              const BodyShapes& shapes,
                                              const std::vector<WorldShape>& start,
                                              const std::vector<WorldShape>& end,
-                                             const Ballistic& motion, double h, double slop,
-                                             double min_speed, double margin) {
+                                             const Ballistic& motion, double h,
+                                             const ImpactFilter& filter) {
   touching_.clear();
   std::optional<double> best;
-  const double same_time = 1e-12 + 1e-9 * h;  // s: impacts this close count as simultaneous
+  const double same_time = simultaneity(h);
   for (const ProxyPair& p : pairs) {
-    const double d0 = signed_distance(start[p.first], start[p.second]);
-    if (d0 <= slop) continue;  // already in contact: the contact solver's business
-    const double d1 = signed_distance(end[p.first], end[p.second]);
-    if (d0 < margin && d0 - d1 < min_speed * h) continue;
-    const auto tau = time_of_impact(shapes[p.first], shapes[p.second], d0, d1, motion, h);
+    const auto tau = impact_time(shapes[p.first], shapes[p.second], start[p.first], start[p.second],
+                                 end[p.first], end[p.second], motion, 0.0, h, filter);
     if (!tau) continue;
     if (!best || *tau < *best - same_time) {
       best = tau;
@@ -105,10 +119,10 @@ std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs
   return best;
 }
 
-void resolve_impacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
+void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
                      const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
-                     std::vector<Impact>& log) {
-  std::vector<Contact> contacts;
+                     std::vector<Contact>& contacts, std::vector<Impact>& log) {
+  contacts.clear();
   for (const ProxyPair& p : pairs) {
     const ShapeRecord& a = shapes[p.first];
     const ShapeRecord& b = shapes[p.second];

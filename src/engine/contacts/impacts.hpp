@@ -4,6 +4,7 @@
 // it; a fast body cannot pass through a thin wall between two steps.
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "engine/collision/broadphase.hpp"
@@ -31,34 +32,58 @@ struct Ballistic {
   /// Transform of `body` after τ [s].
   Vec2 position(BodyId body, double tau) const;
   double angle(BodyId body, double tau) const;
+  /// Velocities of `body` after τ [s].
+  Vec2 velocity(BodyId body, double tau) const;
+  double angular_velocity(BodyId body, double tau) const;
 };
+
+/// Fastest any point of shape `r` can move during a step of h [s] along `motion`, a bound [m/s].
+double speed_bound(const ShapeRecord& r, const Ballistic& motion, double h);
+
+/// Which pairs the time-of-impact search leaves to the contact solver.
+struct ImpactFilter {
+  double slop;       ///< m: pairs closer than this at the start are in contact already
+  double min_speed;  ///< m/s: within `margin`, pairs closing slower than this are contacts
+  double margin;     ///< m: the contact solver's speculative margin
+};
+
+/// The earliest τ in (t0, h] at which shapes `a` and `b`, apart at τ = t0 (signed distance >
+/// `filter.slop`), touch while following `motion`; nothing if they do not. Pairs closer than
+/// `filter.margin` that close slower than `filter.min_speed` over the rest of the step are left
+/// to the contact solver's speculative contacts, as they bounce no more than resting contacts
+/// (restitution threshold). `a0`, `b0` and `a1`, `b1` are the shapes placed at τ = t0 and τ = h.
+std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b, const WorldShape& a0,
+                                  const WorldShape& b0, const WorldShape& a1, const WorldShape& b1,
+                                  const Ballistic& motion, double t0, double h,
+                                  const ImpactFilter& filter);
+
+/// Impacts this close in time [s] over a step of h [s] count as simultaneous.
+inline double simultaneity(double h) {
+  return 1e-12 + 1e-9 * h;
+}
 
 class ImpactSearch {
  public:
-  /// The earliest τ in (0, h] at which a pair of `pairs` that is apart at the start (signed
-  /// distance > `slop` [m]) touches; nothing if no such pair does. Pairs closer than `margin` [m]
-  /// that close slower than `min_speed` [m/s] over the step are left to the contact solver's
-  /// speculative contacts, as they bounce no more than resting contacts (restitution threshold).
-  /// `start` and `end` are the shapes placed at τ = 0 and at τ = h along `motion`.
+  /// The earliest impact_time() from τ = 0 of any of `pairs`, nothing if none. `start` and
+  /// `end` are the shapes placed at τ = 0 and at τ = h along `motion`.
   std::optional<double> earliest(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
                                  const std::vector<WorldShape>& start,
                                  const std::vector<WorldShape>& end, const Ballistic& motion,
-                                 double h, double slop, double min_speed, double margin);
+                                 double h, const ImpactFilter& filter);
 
   /// The pairs found touching at the earliest time by the last call to earliest().
   const std::vector<ProxyPair>& touching() const { return touching_; }
 
  private:
-  std::optional<double> time_of_impact(const ShapeRecord& a, const ShapeRecord& b, double d0,
-                                       double d1, const Ballistic& motion, double h) const;
   std::vector<ProxyPair> touching_;
 };
 
 /// Resolves the impacts of `pairs` in state `s` at time `t`: the pairs' contacts get the impulse
 /// of IM:col2D (one point), or sequential impulses iterated to convergence with the same
 /// restitution targets (two points, or several pairs at once). Appends what it did to `log`.
-void resolve_impacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
+/// `contacts` is scratch, kept by the caller so that an impact allocates nothing.
+void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
                      const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
-                     std::vector<Impact>& log);
+                     std::vector<Contact>& contacts, std::vector<Impact>& log);
 
 }  // namespace gp

@@ -23,6 +23,10 @@ class Integrator {
   /// (symplectic Euler), ½ when it uses the mean of the start and end velocities (trapezoidal:
   /// velocity Verlet, RK4). With this share a body resting on the ground stays exactly still.
   virtual double impulse_position_share() const = 0;
+
+  /// True when a step under constant accelerations lands exactly on the ballistic path
+  /// x₀ + v₀h + ½ah², so that a step may start from any point of that path (local impacts).
+  virtual bool exact_for_constant_acceleration() const = 0;
 };
 
 std::unique_ptr<Integrator> make_integrator(IntegratorKind kind);

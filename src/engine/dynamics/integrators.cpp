@@ -48,6 +48,7 @@ class SymplecticEuler final : public Integrator {
     }
   }
   double impulse_position_share() const override { return 1.0; }
+  bool exact_for_constant_acceleration() const override { return false; }
 
  private:
   Accelerations a_;
@@ -87,6 +88,7 @@ class VelocityVerlet final : public Integrator {
     }
   }
   double impulse_position_share() const override { return 0.5; }
+  bool exact_for_constant_acceleration() const override { return true; }
 
  private:
   Accelerations a0_, a1_;
@@ -145,6 +147,7 @@ class RungeKutta4 final : public Integrator {
     }
   }
   double impulse_position_share() const override { return 0.5; }
+  bool exact_for_constant_acceleration() const override { return true; }
 
  private:
   // The slopes of one stage: its velocities (the slope of x and ϕ) and accelerations.

@@ -26,6 +26,10 @@ class Transform {
   Vec2 rotate(const Vec2& v) const {
     return {cos_ * v.x() - sin_ * v.y(), sin_ * v.x() + cos_ * v.y()};
   }
+  /// A direction turned from world to body axes: the inverse of rotate().
+  Vec2 unrotate(const Vec2& v) const {
+    return {cos_ * v.x() + sin_ * v.y(), -sin_ * v.x() + cos_ * v.y()};
+  }
   /// A point (m) mapped from body to world coordinates.
   Vec2 apply(const Vec2& p) const { return position_ + rotate(p); }
 

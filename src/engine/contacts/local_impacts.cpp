@@ -1,0 +1,210 @@
+#include "engine/contacts/local_impacts.hpp"
+
+#include <algorithm>
+
+#include "engine/collision/narrowphase.hpp"
+#include "engine/collision/signed_distance.hpp"
+#include "engine/contacts/collision_detection.hpp"
+#include "engine/geometry/shape_extent.hpp"
+
+namespace gp {
+
+ImpactFilter LocalImpacts::filter() const {
+  return {settings_.linear_slop, settings_.restitution_threshold, settings_.contact_margin};
+}
+
+void LocalImpacts::classify(const std::vector<ProxyPair>& pairs,
+                            const std::vector<WorldShape>& start,
+                            const std::vector<WorldShape>& end, const Ballistic& motion, double h,
+                            bool search, std::vector<Contact>& contacts) {
+  pending_.clear();
+  if (!search) return;
+  const ImpactFilter f = filter();
+  // Both lists are sorted by pair: one forward scan finds each pair's contact.
+  auto contact = contacts.begin();
+  for (const ProxyPair& p : pairs) {
+    while (contact != contacts.end() && contact->key() < key_of(p)) ++contact;
+    const bool has_contact = contact != contacts.end() && contact->key() == key_of(p);
+    // Touching already: the contact solver's, and no distance to compute.
+    if (has_contact && touching(*contact)) continue;
+    const auto tau = impact_time(shapes_[p.first], shapes_[p.second], start[p.first],
+                                 start[p.second], end[p.first], end[p.second], motion, 0.0, h, f);
+    if (tau) pending_.push_back({p, *tau});
+  }
+  if (pending_.empty()) return;
+  // An impact is resolved at its t_c; its speculative contact must not close the gap before.
+  auto impact = pending_.begin();
+  std::erase_if(contacts, [&](const Contact& c) {
+    while (impact != pending_.end() && key_of(impact->pair) < c.key()) ++impact;
+    return impact != pending_.end() && key_of(impact->pair) == c.key();
+  });
+}
+
+bool LocalImpacts::touching(const Contact& c) const {
+  for (int k = 0; k < c.count; ++k) {
+    if (c.points[k].depth > -settings_.linear_slop) return true;
+  }
+  return false;
+}
+
+bool LocalImpacts::engaged(const Contact& c, const MotionState& s, double h) const {
+  for (int k = 0; k < c.count; ++k) {
+    const ContactPointState& p = c.points[k];
+    const double closing = -contact_relative_velocity(s, c, p).dot(c.normal) * h;  // m
+    if (p.depth + std::max(closing, 0.0) > -settings_.linear_slop) return true;
+  }
+  return false;
+}
+
+void LocalImpacts::hand_over(const std::vector<WorldShape>& start, const MotionState& s, double h,
+                             std::vector<Contact>& contacts, std::vector<Contact>& speculative) {
+  in_solver_.assign(dynamic_.size(), 0);
+  const auto join = [this](BodyId b) {
+    if (dynamic_[b]) in_solver_[b] = 1;
+  };
+  for (const Contact& c : contacts) {
+    if (!engaged(c, s, h)) continue;
+    join(c.body_a);
+    join(c.body_b);
+  }
+  speculative.clear();
+  for (bool grew = true; grew;) {
+    grew = false;
+    std::erase_if(pending_, [&](const Pending& e) {
+      if (!in_solver(e.pair.first) && !in_solver(e.pair.second)) return false;
+      const WorldShape& a = start[e.pair.first];
+      const WorldShape& b = start[e.pair.second];
+      // A margin that reaches the other shape, so that the solver holds the gap closed.
+      const ContactManifold m = collide(a, b, signed_distance(a, b) + settings_.contact_margin);
+      if (m.count > 0) speculative.push_back(make_contact(e.pair, shapes_, m, s));
+      join(shapes_[e.pair.first].body);
+      join(shapes_[e.pair.second].body);
+      grew = true;
+      return true;
+    });
+  }
+  // The bodies left with impacts are the exact path's alone: a contact of theirs that is not
+  // engaged (apart, not closing within the step) is searched for impacts after theirs instead.
+  if (!pending_.empty()) {
+    with_impact_.assign(dynamic_.size(), 0);
+    for (const Pending& e : pending_) {
+      with_impact_[shapes_[e.pair.first].body] = 1;
+      with_impact_[shapes_[e.pair.second].body] = 1;
+    }
+    std::erase_if(contacts, [this](const Contact& c) {
+      return (dynamic_[c.body_a] && with_impact_[c.body_a]) ||
+             (dynamic_[c.body_b] && with_impact_[c.body_b]);
+    });
+  }
+}
+
+void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
+                           const Accelerations& acceleration) const {
+  // Under constant accelerations the path through the state just after the impact, followed
+  // back by τ, starts where the body must start to pass through that state.
+  const Ballistic back{at_impact_, acceleration};
+  start.position[b] = back.position(b, -tau);
+  start.angle[b] = back.angle(b, -tau);
+  start.velocity[b] = back.velocity(b, -tau);
+  start.angular_velocity[b] = back.angular_velocity(b, -tau);
+}
+
+bool LocalImpacts::resolve(double t, double h, MotionState& start,
+                           const Accelerations& acceleration,
+                           const std::vector<WorldShape>& world_start, std::vector<WorldShape>& end,
+                           int& impacts, std::vector<Impact>& log) {
+  if (pending_.empty()) return true;
+  const Ballistic motion{start, acceleration};
+  const double half_margin = 0.5 * settings_.contact_margin;
+  swept_.resize(shapes_.size());
+  for (std::size_t i = 0; i < shapes_.size(); ++i) {
+    swept_[i] = Aabb{world_start[i].bounds.min.cwiseMin(end[i].bounds.min),
+                     world_start[i].bounds.max.cwiseMax(end[i].bounds.max)}
+                    .fattened(half_margin);
+  }
+  at_impact_.resize(start.position.size());
+  is_changed_.assign(start.position.size(), 0);
+  const double same_time = simultaneity(h);
+  while (!pending_.empty() && impacts < settings_.max_impacts_per_step) {
+    const double tau =
+        std::min_element(pending_.begin(), pending_.end(), [](const Pending& x, const Pending& y) {
+          return x.time < y.time;
+        })->time;
+    group_.clear();
+    changed_.clear();
+    for (const Pending& e : pending_) {
+      if (e.time > tau + same_time) continue;
+      group_.push_back(e.pair);
+      for (std::uint32_t shape : {e.pair.first, e.pair.second}) {
+        const BodyId b = shapes_[shape].body;
+        at_impact_.position[b] = motion.position(b, tau);
+        at_impact_.angle[b] = motion.angle(b, tau);
+        at_impact_.velocity[b] = motion.velocity(b, tau);
+        at_impact_.angular_velocity[b] = motion.angular_velocity(b, tau);
+        if (dynamic_[b] && !is_changed_[b]) {
+          is_changed_[b] = 1;
+          changed_.push_back(b);
+        }
+      }
+    }
+    std::sort(group_.begin(), group_.end());
+    resolve_impacts(group_, shapes_, inertia_, settings_, t + tau, at_impact_, impact_contacts_,
+                    log);
+    ++impacts;
+    for (BodyId b : changed_) restart(b, tau, start, acceleration);
+    std::erase_if(pending_, [this](const Pending& e) {
+      return is_changed_[shapes_[e.pair.first].body] || is_changed_[shapes_[e.pair.second].body];
+    });
+    if (!search_after(changed_, tau, h, motion, end)) return false;
+    for (BodyId b : changed_) is_changed_[b] = 0;
+  }
+  return true;
+}
+
+bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, double h,
+                                const Ballistic& motion, std::vector<WorldShape>& end) {
+  const auto placed_at = [&](std::uint32_t i, double when) {
+    const BodyId b = shapes_[i].body;
+    return to_world(shapes_[i].local, Transform(motion.position(b, when), motion.angle(b, when)));
+  };
+  const double half_margin = 0.5 * settings_.contact_margin;
+  // First every changed shape's new box, so that two changed shapes see each other's.
+  for (BodyId b : changed) {
+    for (std::uint32_t i : shapes_.of_body(b)) {
+      end[i] = placed_at(i, h);
+      const Aabb now = placed_at(i, tau).bounds;
+      swept_[i] =
+          Aabb{now.min.cwiseMin(end[i].bounds.min), now.max.cwiseMax(end[i].bounds.max)}.fattened(
+              half_margin);
+    }
+  }
+  const ImpactFilter f = filter();
+  for (BodyId b : changed) {
+    for (std::uint32_t i : shapes_.of_body(b)) {
+      const WorldShape here = placed_at(i, tau);
+      for (std::uint32_t k = 0; k < shapes_.size(); ++k) {
+        const BodyId other = shapes_[k].body;
+        if (other == b || !swept_[i].overlaps(swept_[k])) continue;
+        // A pair of two changed bodies is searched once, from the one with the lower id.
+        if (is_changed_[other] && other < b) continue;
+        if (in_solver(k)) {
+          // Its path is the solver's, not known here: safe to leave to the next step only if
+          // neither can have moved through the other by then.
+          const double reach_left =
+              (speed_bound(shapes_[i], motion, h) + speed_bound(shapes_[k], motion, h)) * (h - tau);
+          if (reach_left >=
+              std::min(half_thickness(shapes_[i].local), half_thickness(shapes_[k].local))) {
+            return false;
+          }
+          continue;
+        }
+        const auto when = impact_time(shapes_[i], shapes_[k], here, placed_at(k, tau), end[i],
+                                      end[k], motion, tau, h, f);
+        if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace gp

@@ -1,0 +1,89 @@
+#pragma once
+// Time of impact without sub-stepping the whole space (FR:Determine-Collision-Response-Over-Time,
+// IM:col2D). When the accelerations are constant over a step, a body's ballistic path is exact,
+// so an impact at t_c inside the step can be resolved for its two bodies alone: their states at
+// t_c come from the path, IM:col2D changes their velocities there, and the rest of their path is
+// the ballistic path from the new state. Every other body takes the step in one piece. An impact
+// on a body that also has resting contacts is left to the contact solver as a speculative
+// contact instead, as a heap's many small impacts are; only isolated impacts (free flight into a
+// wall, the floor or another free body) take the exact path.
+
+#include <span>
+#include <vector>
+
+#include "engine/contacts/body_shapes.hpp"
+#include "engine/contacts/contact.hpp"
+#include "engine/contacts/impacts.hpp"
+#include "engine/settings.hpp"
+
+namespace gp {
+
+class LocalImpacts {
+ public:
+  LocalImpacts(const BodyShapes& shapes, const BodyInertia& inertia,
+               const std::vector<char>& dynamic, const Settings& settings)
+      : shapes_(shapes), inertia_(inertia), dynamic_(dynamic), settings_(settings) {}
+
+  /// Finds the impacts of a step of h [s] from placement `start` to `end` along `motion`:
+  /// the candidate `pairs` that are apart at the start and touch within the step (only when
+  /// `search`, i.e. impacts are still allowed this step). Their speculative contacts leave
+  /// `contacts` (the contacts of `pairs`; both sorted by pair), as the impacts take their place.
+  void classify(const std::vector<ProxyPair>& pairs, const std::vector<WorldShape>& start,
+                const std::vector<WorldShape>& end, const Ballistic& motion, double h, bool search,
+                std::vector<Contact>& contacts);
+
+  /// Pending impacts on bodies that take part in `contacts` become `speculative` contacts
+  /// (made at placement `start` of state `s`; see solve_speculative), and so do impacts on bodies
+  /// thereby added, until no pending impact touches a body of the contact solver; a body takes part
+  /// when one of its contacts is engaged over the step of h [s]. The other contacts of bodies left
+  /// with impacts are dropped: the impacts' own search covers them.
+  void hand_over(const std::vector<WorldShape>& start, const MotionState& s, double h,
+                 std::vector<Contact>& contacts, std::vector<Contact>& speculative);
+
+  /// Resolves the remaining impacts in time order, each at its t_c = t + τ, and logs them in
+  /// `log` (at most `max_impacts` - `impacts` of them; `impacts` counts them). Each body an
+  /// impact changes gets, in `start`, the state from which its ballistic path over the step
+  /// passes through its state just after the impact; its shapes' placement at the end of the
+  /// step, in `end`, follows. Returns false, leaving the step to be sub-stepped, when a changed
+  /// path could carry a body through one of the contact solver's bodies within the step.
+  bool resolve(double t, double h, MotionState& start, const Accelerations& acceleration,
+               const std::vector<WorldShape>& world_start, std::vector<WorldShape>& end,
+               int& impacts, std::vector<Impact>& log);
+
+ private:
+  struct Pending {
+    ProxyPair pair;
+    double time;  ///< τ [s] from the start of the step
+  };
+
+  ImpactFilter filter() const;
+  /// Whether a point of `c` overlaps or is within the slop.
+  bool touching(const Contact& c) const;
+  /// Whether contact `c` can push during a step of h [s] from state `s`: a point touching, or
+  /// closing its gap within the step.
+  bool engaged(const Contact& c, const MotionState& s, double h) const;
+  bool in_solver(std::uint32_t shape) const { return in_solver_[shapes_[shape].body] != 0; }
+  /// The state of body b at τ on its path, resolved at τ, and its path restarted there.
+  void restart(BodyId b, double tau, MotionState& start, const Accelerations& acceleration) const;
+  /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed;
+  /// false when one of them could pass through a body of the contact solver.
+  bool search_after(std::span<const BodyId> changed, double tau, double h, const Ballistic& motion,
+                    std::vector<WorldShape>& end);
+
+  const BodyShapes& shapes_;
+  const BodyInertia& inertia_;
+  const std::vector<char>& dynamic_;
+  const Settings& settings_;
+  std::vector<Pending> pending_;
+  std::vector<char> in_solver_;    // per body: dynamic and in a contact of the solver this step
+  std::vector<char> with_impact_;  // per body: in a pending impact after hand_over()
+  std::vector<Aabb> swept_;        // per shape: its box over the rest of its path, + margin / 2
+  // Scratch kept between steps so that impacts allocate nothing once the scene is warmed up.
+  std::vector<ProxyPair> group_;
+  std::vector<BodyId> changed_;
+  std::vector<char> is_changed_;
+  std::vector<Contact> impact_contacts_;
+  MotionState at_impact_;
+};
+
+}  // namespace gp
