@@ -205,7 +205,8 @@ void Space::advance(double h) {
                              state_);
   }
   if (!speculative_contacts_.empty()) {
-    solve_speculative(contacts_, speculative_contacts_, inertia_, start_, h, settings_, state_);
+    solve_speculative(contacts_, speculative_contacts_, inertia_, start_, h, settings_, state_,
+                      speculative_scratch_);
     correct_positions(speculative_contacts_, inertia_, settings_.position_iterations,
                       settings_.linear_slop, state_, rotations_);
     speculative_contacts_.clear();

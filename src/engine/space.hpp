@@ -104,6 +104,7 @@ class Space {
   std::vector<WorldShape> world_start_, world_end_;
   std::vector<Contact> contacts_, previous_contacts_, impact_scratch_;
   std::vector<Contact> speculative_contacts_;  // impacts on resting bodies, this step only
+  SpeculativeScratch speculative_scratch_;
   std::vector<ProxyPair> contact_pairs_;
   RotationCache rotations_;
 };

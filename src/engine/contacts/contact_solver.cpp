@@ -235,18 +235,46 @@ void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyIn
 
 void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& speculative,
                        const BodyInertia& inertia, const MotionState& before, double h,
-                       const Settings& settings, MotionState& s) {
+                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch) {
+  // An impact's impulse fades as it spreads through a heap: the resting contacts up to this many
+  // contacts away from it are solved with it, the rest of the heap holds still for it.
+  constexpr int kReach = 4;
+  scratch.reached.assign(s.position.size(), 0);
+  scratch.included.assign(resting.size(), 0);
+  scratch.nearby.clear();
+  for (const Contact& c : speculative) {
+    scratch.reached[c.body_a] = inertia.inverse_mass[c.body_a] > 0.0;
+    scratch.reached[c.body_b] = inertia.inverse_mass[c.body_b] > 0.0;
+  }
+  for (int level = 0; level < kReach; ++level) {
+    scratch.newly.clear();
+    for (std::size_t i = 0; i < resting.size(); ++i) {
+      const Contact& c = resting[i];
+      if (scratch.included[i] || !(scratch.reached[c.body_a] || scratch.reached[c.body_b]))
+        continue;
+      scratch.included[i] = 1;
+      scratch.nearby.push_back(i);
+      for (BodyId b : {c.body_a, c.body_b}) {
+        if (inertia.inverse_mass[b] > 0.0) scratch.newly.push_back(b);
+      }
+    }
+    for (BodyId b : scratch.newly) scratch.reached[b] = 1;
+  }
+  scratch.subset.clear();
+  for (std::size_t i : scratch.nearby) scratch.subset.push_back(resting[i]);
   // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
   // impulses so far, and give h × their final impulses at the end.
-  move_by_contact_impulses(resting, inertia, -h, s);
+  move_by_contact_impulses(scratch.subset, inertia, -h, s);
   prepare_contacts(speculative, inertia, before, h, settings);
   for (int i = 0; i < settings.velocity_iterations; ++i) {
-    solve_velocities(resting, inertia, 1, s);
+    solve_velocities(scratch.subset, inertia, 1, s);
     solve_velocities(speculative, inertia, 1, s);
   }
   apply_restitution(speculative, inertia, s);
-  move_by_contact_impulses(resting, inertia, h, s);
+  move_by_contact_impulses(scratch.subset, inertia, h, s);
   move_by_contact_impulses(speculative, inertia, h, s);
+  for (std::size_t k = 0; k < scratch.nearby.size(); ++k)
+    resting[scratch.nearby[k]] = scratch.subset[k];
 }
 
 void RotationCache::reset(std::size_t bodies) {

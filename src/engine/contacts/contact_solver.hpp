@@ -53,15 +53,25 @@ void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inerti
 void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s);
 
+/// Scratch for solve_speculative, kept by the caller so that a step does not allocate.
+struct SpeculativeScratch {
+  std::vector<char> reached;        // per body
+  std::vector<char> included;       // per resting contact
+  std::vector<std::size_t> nearby;  // resting contacts solved with the impacts
+  std::vector<BodyId> newly;
+  std::vector<Contact> subset;
+};
+
 /// Impacts the contact solver takes on after the resting contacts are solved: `speculative`
 /// points, still apart at the start of the step of h [s], whose bodies also rest on others (see
-/// LocalImpacts). They are solved together with `resting` for `iterations` passes, and bounce
-/// by C_R after; the impulses this adds act from the impact on, so they move the bodies by
-/// h × Δv, which closes each gap exactly, rather than by the resting share, which would leave a
-/// fast body overlapping and press the body under it into the ground.
+/// LocalImpacts). They are solved together with the resting contacts within a few contacts of
+/// them for `iterations` passes, and bounce by C_R after; the impulses this adds act from the
+/// impact on, so they move the bodies by h × Δv, which closes each gap exactly, rather than by
+/// the resting share, which would leave a fast body overlapping and press the body under it
+/// into the ground.
 void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& speculative,
                        const BodyInertia& inertia, const MotionState& before, double h,
-                       const Settings& settings, MotionState& s);
+                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch);
 
 /// The rotations of bodies by their current angles, each recomputed only when asked for after
 /// its body turned: most contact points of discs need none.
