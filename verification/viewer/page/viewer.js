@@ -101,6 +101,12 @@
 
   function drawBody(i, st, ghost) {
     const b = bodies[i], c = colours[i];
+    if (b.shapes.length === 0) {  // a point mass: a dot of fixed size
+      const [x, y] = toScreen(st[0], st[1]);
+      ctx.beginPath(); ctx.arc(x, y, 6, 0, 2 * Math.PI);
+      if (ghost) { ctx.setLineDash([3, 3]); ctx.strokeStyle = "rgba(0,0,0,0.7)"; ctx.lineWidth = 1.5; ctx.stroke(); ctx.setLineDash([]); }
+      else { ctx.fillStyle = rgb(c); ctx.fill(); }
+    }
     for (const sh of b.shapes) {
       shapePath(sh, st);
       if (sh.kind === "segment") {
@@ -178,6 +184,13 @@
     }
   }
 
+  // An axis label: 3 significant digits, in powers of ten when long; 0 when it is rounding noise
+  // against the axis' span.
+  const axisNumber = (v, span) => {
+    if (Math.abs(v) < 1e-9 * span) return "0";
+    return Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3 ? v.toExponential(2) : Number(v.toPrecision(3)).toString();
+  };
+
   // A line plot of `series` ({label, colour, values}) over time, with the current instant marked.
   function plot(canvas, series, log) {
     const g = canvas.getContext("2d");
@@ -195,7 +208,7 @@
     g.fillStyle = "#333"; g.font = "11px sans-serif";
     for (let n = 0; n <= 4; ++n) {
       const v = lo + (n / 4) * (hi - lo), y = top + (1 - n / 4) * (H - top - bottom);
-      g.fillText(log ? `1e${v.toFixed(1)}` : Number(v.toPrecision(3)).toString(), 4, y + 4);
+      g.fillText(log ? `1e${v.toFixed(1)}` : axisNumber(v, hi - lo), 4, y + 4);
       const t = t0 + (n / 4) * (t1 - t0);
       g.fillText(`${Number(t.toPrecision(3))} s`, px(t) - 12, H - bottom + 14);
     }
@@ -381,7 +394,7 @@
     pixelsPerMetre: view.scale,
     bodyColour: (name) => colours[index(name)],
     bodyScreenPosition: (name) => { const s = frames.states[state.frame][index(name)]; return toScreen(s[0], s[1]); },
-    select: (name) => { state.selected = index(name); render(); },
+    select: (name) => { state.selected = index(name) < 0 ? null : index(name); render(); },
   };
   render();
 })();
