@@ -1,5 +1,7 @@
 #include "verification/audit/katex_inline.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
