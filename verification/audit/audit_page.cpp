@@ -161,6 +161,48 @@ std::string item_section(const TraceInputs& in, const AuditEvidence& evidence, c
          check_table(evidence.checks, item.id) + errata_list(in, item.id) + "</section>";
 }
 
+// One row per model, linking to its section: the overview an auditor starts from.
+std::string index_table(const TraceInputs& in, const AuditEvidence& evidence) {
+  std::string html =
+      "<h2>Index</h2><table id=\"index\"><tr><th>SRS id</th><th>label</th><th>C++ function</th>"
+      "<th>tests</th><th>checks of the suite</th><th>dimensions as written</th><th>errata</th>"
+      "</tr>";
+  for (const Model& m : in.catalog.models) {
+    std::string function;
+    for (const auto& r : in.registrations) {
+      if (r.id == m.id) function = r.function;
+    }
+    const auto tests = tests_of(in, m.id);
+    std::string tested = std::to_string(tests.size());
+    if (const auto& results = evidence.test_results) {
+      int failed = 0;
+      for (const TestCase* t : tests) failed += result_of(*results, t->name) == false ? 1 : 0;
+      tested += failed ? ", " + std::to_string(failed) + " FAILED" : ", all pass";
+    }
+    int checks = 0, failed_checks = 0;
+    for (const Check& c : evidence.checks) {
+      if (names(c, m.id)) ++checks, failed_checks += c.passed ? 0 : 1;
+    }
+    std::string dimensions;
+    for (const DimensionalCheck& d : in.dimensions) {
+      if (d.id == m.id && d.form == "as written") dimensions = d.consistent ? "consistent" : "not";
+    }
+    std::string errata;
+    for (const Erratum& e : in.errata) {
+      if (std::find(e.items.begin(), e.items.end(), m.id) != e.items.end()) {
+        errata += (errata.empty() ? "" : " ") + e.id;
+      }
+    }
+    html += "<tr><td><a href=\"#" + html_escape(m.id) + "\">" + html_escape(m.id) +
+            "</a></td><td>" + html_escape(m.label) + "</td><td><code>" + html_escape(function) +
+            "</code></td><td>" + tested + "</td><td>" + std::to_string(checks) +
+            (failed_checks ? ", " + std::to_string(failed_checks) + " FAILED" : "") +
+            "</td><td class=\"" + (dimensions == "consistent" ? "pass" : "fail") + "\">" +
+            dimensions + "</td><td>" + html_escape(errata) + "</td></tr>";
+  }
+  return html + "</table>";
+}
+
 // A matrix of traceability/ (its CSV: a header of columns, then one row per item) as a table,
 // under the title and legend of its Markdown.
 std::string matrix_table(const TraceFiles& files, const std::string& name) {
@@ -237,6 +279,7 @@ void write_audit_page(std::ostream& out, const SrsAudit& audit, const AuditEvide
         << " failed, " << missing << " not in the test report.</p>";
   }
 
+  out << index_table(in, evidence);
   static const std::pair<const char*, const char*> kModelKinds[] = {
       {"theoretical_models", "Theoretical models"},
       {"general_definitions", "General definitions"},
