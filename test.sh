@@ -6,6 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 ./tools/install-deps.sh
+./tools/install-web.sh
 
 cmake -S . -B build-coverage -DCMAKE_BUILD_TYPE=Debug -DGP_COVERAGE=ON
 cmake --build build-coverage -j2

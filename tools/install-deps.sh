@@ -14,6 +14,8 @@ packages=(
   libboost-dev         # Boost.Units for the dimensional audit
   libchipmunk-dev libbox2d-dev libbenchmark-dev  # peer engines and benchmarks (verification/)
   python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
+  nodejs               # npm: KaTeX for the audit page, playwright-core (tools/install-web.sh)
+  chromium             # headless browser of the browser tests (tests/browser/)
 )
 
 missing=()

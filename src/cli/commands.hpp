@@ -14,6 +14,8 @@ struct VerifyOptions {
   std::filesystem::path root;  ///< the repository: srs/, scenes/, tests/, traceability/
   std::filesystem::path out;   ///< the report folder
   bool quick = false;          ///< short runs only (what ctest runs)
+  /// The JUnit report of a run of the Catch2 tests, whose results the audit page shows.
+  std::optional<std::filesystem::path> test_results;
 };
 
 /// `gamephysics verify`: the main job. The SRS audit (catalogue, functions, tests, dimensional
@@ -64,6 +66,25 @@ struct PeerOptions {
 /// `gamephysics peer`: a scene file run by Chipmunk2D or Box2D (verification/peers), written as
 /// the CSV of `simulate`.
 int peer(const PeerOptions& options);
+
+struct ViewOptions {
+  std::filesystem::path scene;
+  std::filesystem::path out;  ///< the HTML page to write
+  SceneOverrides overrides;
+  bool oracle = false;  ///< overlay the SUNDIALS oracle's solution
+};
+
+/// `gamephysics view`: runs a scene file as `simulate` does and writes one self-contained HTML
+/// page that plays the run back with its energies, momenta, contacts and impacts; with `oracle`,
+/// over the oracle's solution. Exits 2 for bad input (or a scene outside the oracle's domain with
+/// `oracle`) and 1 when the run fails, writing no file either way.
+int view(const ViewOptions& options);
+
+/// `gamephysics audit`: the SRS audit alone, printed and written as `out`/audit.html (the audit
+/// page of `verify`, without the suite's checks), with the results in `test_results` (a JUnit
+/// report of the Catch2 tests) if given. Exits 1 when a traceability check fails.
+int audit(const std::filesystem::path& root, const std::filesystem::path& out,
+          const std::optional<std::filesystem::path>& test_results);
 
 /// `gamephysics bench`: runs build/bin/gamephysics_bench (ours, Chipmunk2D, Box2D).
 int bench(bool quick);

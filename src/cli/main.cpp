@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
   verify->add_option("--root", root, "Repository root")->check(CLI::ExistingDirectory);
   verify->add_option("--out", report, "Report folder (default out/report)");
   verify->add_flag("--quick", verification.quick, "Short runs only (what ctest runs)");
+  verify
+      ->add_option("--test-results", verification.test_results,
+                   "JUnit report of the Catch2 tests (gamephysics_tests -r junit)")
+      ->check(CLI::ExistingFile);
 
   bool check_only = false;
   std::string out;
@@ -68,6 +72,30 @@ int main(int argc, char** argv) {
   peer->add_option("--output-dt", peer_run.overrides.output_dt,
                    "Interval between output rows [s] (overrides the file)");
 
+  gp::cli::ViewOptions view_run;
+  auto* view = app.add_subcommand(
+      "view", "Run a scene file, write one self-contained HTML page that plays it back");
+  view->add_option("scene", view_run.scene, "Scene file (JSON)")->required();
+  view->add_option("--out", view_run.out, "HTML page to write")->required();
+  view->add_option("--integrator", view_run.overrides.integrator,
+                   "symplectic_euler, velocity_verlet or rk4 (overrides the file)");
+  view->add_option("--dt", view_run.overrides.dt, "Time step [s] (overrides the file)");
+  view->add_option("--duration", view_run.overrides.duration,
+                   "Simulated time [s] (overrides the file)");
+  view->add_option("--output-dt", view_run.overrides.output_dt,
+                   "Interval between frames [s] (overrides the file)");
+  view->add_flag("--oracle", view_run.oracle, "Overlay the SUNDIALS oracle's solution");
+
+  std::string audit_out = "out/report";
+  auto* audit = app.add_subcommand("audit", "The SRS audit alone, and its page OUT/audit.html");
+  audit->add_option("--root", root, "Repository root")->check(CLI::ExistingDirectory);
+  std::optional<std::filesystem::path> audit_results;
+  audit->add_option("--out", audit_out, "Report folder (default out/report)");
+  audit
+      ->add_option("--test-results", audit_results,
+                   "JUnit report of the Catch2 tests (gamephysics_tests -r junit)")
+      ->check(CLI::ExistingFile);
+
   bool quick_bench = false;
   auto* bench = app.add_subcommand("bench", "Benchmarks: ours, Chipmunk2D and Box2D, one run");
   bench->add_flag("--quick", quick_bench, "Fewer repetitions");
@@ -86,6 +114,8 @@ int main(int argc, char** argv) {
     if (*peer) return gp::cli::peer(peer_run);
     if (*bench) return gp::cli::bench(quick_bench);
     if (*simulate) return gp::cli::simulate(simulation);
+    if (*view) return gp::cli::view(view_run);
+    if (*audit) return gp::cli::audit(root, audit_out, audit_results);
     if (*oracle) return gp::cli::oracle(oracle_run);
     return gp::cli::trace(
         root,

@@ -1,6 +1,9 @@
+// `gamephysics verify`, the main job, and `gamephysics audit`, its SRS audit alone with the audit
+// page.
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "verification/audit/audit_page.hpp"
 #include "verification/audit/srs_audit.hpp"
 #include "verification/suite/suite.hpp"
 
@@ -27,6 +30,13 @@ std::vector<verification::Check> audit_rows(const verification::SrsAudit& audit)
   return list.rows();
 }
 
+// The Catch2 results in `file`, when given.
+std::optional<verification::TestResults> test_results(
+    const std::optional<std::filesystem::path>& file) {
+  if (!file) return std::nullopt;
+  return verification::load_test_results(*file);
+}
+
 }  // namespace
 
 int verify(const VerifyOptions& options) {
@@ -39,8 +49,22 @@ int verify(const VerifyOptions& options) {
   suite.progress = &std::cout;
   std::cout << "Verification suite against the SUNDIALS oracle ("
             << (options.quick ? "quick" : "full") << "):\n";
-  const bool passed = verification::run_suite(suite, audit_rows(audit));
-  return audit.passed() && passed ? 0 : 1;
+  const auto result = verification::run_suite(suite, audit_rows(audit));
+  const verification::AuditEvidence evidence{result.checks, test_results(options.test_results)};
+  std::cout << "  audit page: "
+            << verification::write_audit_page(options.root, options.out, audit, evidence).string()
+            << "\n";
+  return audit.passed() && result.passed ? 0 : 1;
+}
+
+int audit(const std::filesystem::path& root, const std::filesystem::path& out,
+          const std::optional<std::filesystem::path>& results) {
+  const auto audit = verification::run_srs_audit(root);
+  std::cout << verification::format_srs_audit(audit) << "\n";
+  const verification::AuditEvidence evidence{{}, test_results(results)};
+  std::cout << "audit page: " << verification::write_audit_page(root, out, audit, evidence).string()
+            << "\n";
+  return audit.passed() ? 0 : 1;
 }
 
 }  // namespace gp::cli

@@ -56,6 +56,8 @@ class Space {
 
   /// The impacts resolved at their time of impact during the last step.
   const std::vector<Impact>& impacts() const { return impacts_; }
+  /// The contact constraints of the last sub-step, with the impulses the solver accumulated.
+  const std::vector<Contact>& contacts() const { return previous_contacts_; }
 
   /// The space's own models, for a verifier that integrates the same equations another way
   /// (the SUNDIALS oracle): the force model (IM:transMot, IM:rotMot right-hand sides), the shapes

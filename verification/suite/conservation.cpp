@@ -3,49 +3,13 @@
 #include <cmath>
 
 #include "engine/scene/run.hpp"
-#include "gamephysics/models/dd/kinetic_energy.hpp"
-#include "gamephysics/models/dd/potential_energy.hpp"
+#include "verification/quantities/mechanical_quantities.hpp"
 #include "verification/suite/scene_builders.hpp"
 #include "verification/suite/suite.hpp"
 
 namespace gp::verification {
 
 namespace {
-
-struct Invariants {
-  Vec2 momentum = Vec2::Zero();   ///< kg·m/s
-  double angular_momentum = 0.0;  ///< kg·m²/s about the origin
-  double energy = 0.0;  ///< J: kinetic with rotation, uniform-field and pairwise potential
-};
-
-Invariants invariants(const Space& space) {
-  Invariants v;
-  std::vector<BodyId> dynamic;
-  for (BodyId id = 0; id < space.body_count(); ++id) {
-    if (space.type(id) == BodyType::Dynamic) dynamic.push_back(id);
-  }
-  for (BodyId id : dynamic) {
-    const BodyState s = space.state(id);
-    const double m = space.mass(id);
-    const double I = std::isinf(space.moment(id)) ? 0.0 : space.moment(id);
-    v.momentum += m * s.velocity;
-    v.angular_momentum += m * cross(s.position, s.velocity) + I * s.angular_velocity;
-    v.energy += dd::kinetic_energy(m, s.velocity, I, s.angular_velocity) +
-                dd::potential_energy(m, space.settings().gravity, s.position);
-  }
-  if (const auto G = space.settings().G) {
-    // The pairwise potential −G m_i m_j / d, whose gradient is TM:UniversalGravLaw (the SRS has
-    // no DD for it: DD:potEnergy is the uniform field).
-    for (std::size_t i = 0; i < dynamic.size(); ++i) {
-      for (std::size_t j = i + 1; j < dynamic.size(); ++j) {
-        const double d =
-            (space.state(dynamic[i]).position - space.state(dynamic[j]).position).norm();
-        v.energy -= *G * space.mass(dynamic[i]) * space.mass(dynamic[j]) / d;
-      }
-    }
-  }
-  return v;
-}
 
 struct Drift {
   double momentum = 0.0;          ///< largest |p − p₀| / Σ m|v₀|
@@ -71,8 +35,10 @@ Drift drift_over(const Scene& scene, long steps) {
     d.angular_momentum =
         std::max(d.angular_momentum, std::abs(now.angular_momentum - start.angular_momentum) /
                                          std::abs(start.angular_momentum));
-    d.energy = std::max(d.energy, std::abs(now.energy - start.energy) / std::abs(start.energy));
-    d.energy_gain = std::max(d.energy_gain, (now.energy - start.energy) / std::abs(start.energy));
+    d.energy =
+        std::max(d.energy, std::abs(now.energy() - start.energy()) / std::abs(start.energy()));
+    d.energy_gain =
+        std::max(d.energy_gain, (now.energy() - start.energy()) / std::abs(start.energy()));
   }
   return d;
 }

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "verification/html/html_escape.hpp"
 #include "verification/suite/report.hpp"
 
 namespace gp::verification {
@@ -16,26 +17,6 @@ std::string figure(double value) {
 }
 
 namespace {
-
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string md_cell(const std::string& text) {
   std::string out;
@@ -63,7 +44,9 @@ void write_report(const std::filesystem::path& out, const std::vector<Check>& ch
   const ReportSummary summary = summarise(checks);
   std::ofstream md(out / "report.md");
   std::ofstream html(out / "index.html");
-  md << "# GamePhysics verification report\n\nMade by `build/bin/gamephysics verify` (./run.sh). "
+  md << "# GamePhysics verification report\n\nMade by `build/bin/gamephysics verify` (./run.sh); "
+        "every SRS item with its equation, code, tests, checks and errata: "
+        "[audit.html](audit.html). "
         "Every row names the SRS items it verifies; a row with a criterion passes or fails, a "
         "row marked \"reported\" gives figures only.\n\n## Summary\n\n"
         "|section|rows|with a criterion|failed|\n|:---|---:|---:|---:|\n";
@@ -74,7 +57,9 @@ void write_report(const std::filesystem::path& out, const std::vector<Check>& ch
           "img{max-width:48%;margin:0.5%}</style></head><body>"
           "<h1>GamePhysics verification report</h1><p>Made by <code>build/bin/gamephysics "
           "verify</code>. Data: <a href=\"data/\">data/</a> (CSV). Also as <a href=\"report.md\">"
-          "Markdown</a>.</p><h2>Summary</h2><table><tr><th>section</th><th>rows</th><th>with a "
+          "Markdown</a>. Every SRS item with its equation, code, tests, checks and errata: <a "
+          "href=\"audit.html\">the audit "
+          "page</a>.</p><h2>Summary</h2><table><tr><th>section</th><th>rows</th><th>with a "
           "criterion</th><th>failed</th></tr>";
   for (const auto& [name, s] : summary.sections) {
     md << "|" << name << "|" << s.rows << "|" << s.checked << "|" << s.failed << "|\n";

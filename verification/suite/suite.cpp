@@ -7,7 +7,7 @@
 
 namespace gp::verification {
 
-bool run_suite(const SuiteOptions& o, const std::vector<Check>& audit_rows) {
+SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_rows) {
   std::vector<Check> checks = audit_rows;
   const auto scenes = load_scenes(o.root / "scenes");
   CsvFiles data;
@@ -41,7 +41,7 @@ bool run_suite(const SuiteOptions& o, const std::vector<Check>& audit_rows) {
       << (plots.empty() ? "no plots: see plots.log" : std::to_string(plots.size()) + " plots")
       << ")\n";
   out << "  result: " << (summary.failures.empty() ? "PASS" : "FAIL") << "\n";
-  return summary.failures.empty();
+  return {summary.failures.empty(), std::move(checks)};
 }
 
 }  // namespace gp::verification

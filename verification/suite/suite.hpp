@@ -44,7 +44,12 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
 std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
                                          const SuiteOptions& o, CsvFiles& data);
 
-/// Runs everything, writes the report, prints the summary; returns true when every check passed.
-bool run_suite(const SuiteOptions& options, const std::vector<Check>& audit_rows);
+struct SuiteResult {
+  bool passed;                ///< every check passed
+  std::vector<Check> checks;  ///< the audit rows, then every check of the suite
+};
+
+/// Runs everything, writes the report, prints the summary.
+SuiteResult run_suite(const SuiteOptions& options, const std::vector<Check>& audit_rows);
 
 }  // namespace gp::verification

@@ -1,0 +1,119 @@
+// The viewer page in a real browser: a run of scenes/bouncing_ball.json played, stepped and
+// scrubbed, with the ball found where the CSV of `gamephysics simulate` puts it, both by the
+// page's test hook and by the colour of the pixels drawn; its inspector's DD:kEnergy against
+// the CSV; and a page with the oracle overlaid.
+import assert from "node:assert/strict";
+import { readFileSync } from "node:fs";
+import path from "node:path";
+import { test } from "node:test";
+
+import { gamephysics, openPage, out, root } from "./browser.mjs";
+
+const scene = path.join(root, "scenes/bouncing_ball.json");
+const ballMass = Math.PI * 0.5 * 0.5;  // a disc of radius 0.5 m at the default 1 kg/m²
+
+// The ball's rows of the CSV: [t, x, y, vx, vy] per output instant.
+function csvRows(file, body) {
+  const [header, ...lines] = readFileSync(file, "utf8").trim().split("\n");
+  assert.equal(header, "t,body,x,y,angle,vx,vy,omega");
+  return lines.map((l) => l.split(",")).filter((f) => f[1] === body)
+    .map((f) => [f[0], f[2], f[3], f[5], f[6]].map(Number));
+}
+
+// Where the page drew the ball: the centroid of the pixels of its fill colour.
+async function drawnCentre(page) {
+  return page.evaluate(() => {
+    const canvas = document.getElementById("world");
+    const pixels = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+    const [r, g, b] = window.gp.bodyColour("ball");
+    let n = 0, sx = 0, sy = 0;
+    for (let i = 0; i < pixels.length; i += 4) {
+      if (pixels[i] === r && pixels[i + 1] === g && pixels[i + 2] === b && pixels[i + 3] === 255) {
+        const p = i / 4;
+        ++n; sx += (p % canvas.width) + 0.5; sy += Math.floor(p / canvas.width) + 0.5;
+      }
+    }
+    return { n, x: sx / n, y: sy / n };
+  });
+}
+
+test("the viewer shows the ball where simulate puts it, frame by frame", async () => {
+  const csvFile = path.join(out, "browser_ball.csv"), html = path.join(out, "browser_ball.html");
+  gamephysics("simulate", scene, "--out", csvFile);
+  gamephysics("view", scene, "--out", html);
+  const rows = csvRows(csvFile, "ball");
+  const { page, requests, errors, close } = await openPage(html);
+  try {
+    await page.waitForFunction(() => window.gp !== undefined);
+    assert.equal(await page.evaluate(() => window.gp.frameCount), rows.length);
+    // The ball's fill alone: no centre-of-mass dot, velocity arrow or contact marks over it.
+    for (const layer of ["#show-com", "#show-velocity", "#show-contacts"]) await page.uncheck(layer);
+    const scale = await page.evaluate(() => window.gp.pixelsPerMetre);
+    let worstPixels = 0, worstDrawn = 0;
+    const compare = async (what) => {
+      const k = await page.evaluate(() => window.gp.frame());
+      const [t, x, y] = rows[k];
+      assert.equal(await page.evaluate(() => window.gp.time()), t, `${what}: time of frame ${k}`);
+      const expected = await page.evaluate(([x, y]) => window.gp.worldToScreen(x, y), [x, y]);
+      const hook = await page.evaluate(() => window.gp.bodyScreenPosition("ball"));
+      const drawn = await drawnCentre(page);
+      const dHook = Math.hypot(hook[0] - expected[0], hook[1] - expected[1]);
+      const dDrawn = Math.hypot(drawn.x - expected[0], drawn.y - expected[1]);
+      assert.ok(drawn.n > 100, `${what}: the ball is drawn (${drawn.n} pixels)`);
+      assert.ok(dHook < 1e-6, `${what}: frame ${k}: hook ${hook} against the CSV's ${expected}`);
+      assert.ok(dDrawn < 1.5, `${what}: frame ${k}: drawn at ${drawn.x}, ${drawn.y}, CSV ${expected}`);
+      worstPixels = Math.max(worstPixels, dHook);
+      worstDrawn = Math.max(worstDrawn, dDrawn);
+      return k;
+    };
+    // Play for at least a second of simulated time (60 frames), then pause.
+    await page.selectOption("#speed", "4");
+    await page.click("#play");
+    await page.waitForFunction(() => window.gp.frame() >= 60);
+    await page.click("#play");
+    assert.equal(await page.evaluate(() => window.gp.playing()), false);
+    const played = await compare("played");
+    assert.ok(played >= 60);
+    await page.screenshot({ path: path.join(out, "viewer_ball_played.png") });
+    for (let n = 0; n < 5; ++n) await page.click("#step");
+    assert.equal(await compare("stepped"), played + 5);
+    // Scrub to 1.5 s, just after the first bounce (t_c = 1.3917 s), and inspect the ball there.
+    await page.$eval("#scrub", (s) => { s.value = "90"; s.dispatchEvent(new Event("input")); });
+    assert.equal(await compare("scrubbed"), 90);
+    const hook = await page.evaluate(() => window.gp.bodyScreenPosition("ball"));
+    await page.mouse.click(...(await page.$eval("#world", (c) => [c.getBoundingClientRect().left, c.getBoundingClientRect().top])).map((v, i) => v + hook[i]));
+    const cells = await page.$$eval("#body-table tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+    const row = (label) => cells.find((c) => c[0].startsWith(label));
+    const [, , , vx, vy] = rows[90];
+    const ke = Number(row("kinetic energy, translational")[2]);
+    assert.equal(row("kinetic energy, translational")[1], "DD:kEnergy");
+    assert.ok(Math.abs(ke - 0.5 * ballMass * (vx * vx + vy * vy)) <= 1e-5 * ke, `DD:kEnergy ${ke}`);
+    assert.equal(row("impulse on this body")[1], "DD:impulseV");
+    assert.ok(Math.abs(Number(row("last impact: time")[2]) - Math.sqrt((2 * 9.5) / 9.81)) < 1e-5);
+    await page.screenshot({ path: path.join(out, "viewer_ball_inspected.png") });
+    console.log(`viewer: ${rows.length} frames; hook against CSV: ${worstPixels.toExponential(2)} px; ` +
+      `drawn pixels against CSV: ${worstDrawn.toFixed(3)} px = ${(worstDrawn / scale).toExponential(3)} m ` +
+      `(${scale.toFixed(2)} px/m)`);
+    assert.deepEqual(requests, [], "the page fetches nothing");
+    assert.deepEqual(errors, [], "no script error");
+  } finally {
+    await close();
+  }
+});
+
+test("the viewer overlays the oracle on the oblique collision", async () => {
+  const html = path.join(out, "browser_oblique.html");
+  gamephysics("view", path.join(root, "scenes/oblique.json"), "--out", html, "--oracle");
+  const { page, requests, errors, close } = await openPage(html);
+  try {
+    await page.waitForFunction(() => window.gp !== undefined);
+    assert.ok(await page.isVisible("#error-plot"));
+    assert.ok(await page.isVisible("#show-oracle"));
+    await page.$eval("#scrub", (s) => { s.value = s.max; s.dispatchEvent(new Event("input")); });
+    await page.screenshot({ path: path.join(out, "viewer_oblique_oracle.png") });
+    assert.deepEqual(requests, []);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
