@@ -38,6 +38,20 @@ TEST_CASE("A number beyond the range of double is malformed JSON, not infinity",
               "must be valid JSON", "number overflow parsing '1e400'");
 }
 
+TEST_CASE("A document nested deeper than 64 levels is refused where it goes too deep",
+          "[FR:Verify-Physical_Constraints]") {
+  // Describing so deep a value in a message would recurse once per level: 30000 levels
+  // overflowed the stack (a crash the fuzzer's seed verification/fuzz/crashes/ keeps).
+  const std::string deep = std::string(30000, '[') + std::string(30000, ']');
+  // The path is that of the 64th level, whose first element would open the 65th.
+  std::string path;
+  for (int level = 0; level < 63; ++level) path += "[0]";
+  check_error(R"({"dt": 0.01, "duration": 1, "bodies": )" + deep + "}", "bodies" + path,
+              "must nest arrays and objects at most 64 deep (scenes need 7)", "level 65");
+  check_error(deep, path + "[0]", "must nest arrays and objects at most 64 deep (scenes need 7)",
+              "level 65");
+}
+
 TEST_CASE("The file must exist and hold a JSON object", "[FR:Verify-Physical_Constraints]") {
   REQUIRE_THROWS_AS(gp::load_scene("/nonexistent/scene.json"), gp::InputError);
   try {

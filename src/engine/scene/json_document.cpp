@@ -10,6 +10,11 @@ namespace gp {
 
 namespace {
 
+// The scene format nests 7 levels deep (root, bodies, a body, shapes, a shape, vertices, a
+// vertex). Far deeper documents are refused while parsing: describing an offending value in an
+// error message, like copying one, recurses once per level and would overflow the stack.
+constexpr std::size_t kMaxDepth = 64;
+
 /// Where the parser is: one level per open object or array, enough to name a key's JSON path.
 class PathTracker {
  public:
@@ -20,6 +25,12 @@ class PathTracker {
       case Event::object_start:
       case Event::array_start:
         count_array_element();
+        if (levels_.size() == kMaxDepth) {
+          throw InputError(levels_.empty() ? "(file)" : path(),
+                           "must nest arrays and objects at most " + std::to_string(kMaxDepth) +
+                               " deep (scenes need 7)",
+                           "level " + std::to_string(kMaxDepth + 1));
+        }
         levels_.push_back({event == Event::array_start, {}, {}, 0});
         break;
       case Event::object_end:
