@@ -14,6 +14,7 @@ packages=(
   libboost-dev         # Boost.Units for the dimensional audit
   libchipmunk-dev libbox2d-dev libbenchmark-dev  # peer engines and benchmarks (verification/)
   python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
+  clang libclang-rt-14-dev  # the libFuzzer target of ./test.sh (verification/fuzz)
 )
 
 missing=()
