@@ -41,7 +41,7 @@ TEST_CASE("A number beyond the range of double is malformed JSON, not infinity",
 TEST_CASE("A document nested deeper than 64 levels is refused where it goes too deep",
           "[FR:Verify-Physical_Constraints]") {
   // Describing so deep a value in a message would recurse once per level: 30000 levels
-  // overflowed the stack (a crash the fuzzer's seed verification/fuzz/crashes/ keeps).
+  // overflowed the stack (verification/fuzz/crashes/ keeps two such inputs).
   const std::string deep = std::string(30000, '[') + std::string(30000, ']');
   // The path is that of the 64th level, whose first element would open the 65th.
   std::string path;
@@ -243,6 +243,12 @@ TEST_CASE("Degenerate shapes are reported at the shape's path",
   check_error(scene_with(R"({"name": "b", "position": [0, 0],
       "shapes": [{"type": "segment", "a": [1, 1], "b": [1, 1]}]})"),
               "bodies[0].shapes[0]", "segment ends must be distinct", "a = (1, 1) and b = (1, 1)");
+  check_error(scene_with(R"({"name": "b", "position": [0, 0],
+      "shapes": [{"type": "polygon", "vertices": [[0, 0], [1, 1], [3, 3]]}]})"),
+              "bodies[0].shapes[0]", "polygon area must be > 0 (vertices not all collinear)", "0");
+  check_error(scene_with(R"({"name": "b", "position": [0, 0],
+      "shapes": [{"type": "polygon", "vertices": [[0, 0], [1, 1], [1, 1], [0, 0]]}]})"),
+              "bodies[0].shapes[0]", "polygon needs at least 3 distinct vertices", "2");
   // A message without ", got": the shape itself is the offending value.
   check_error(scene_with(R"({"name": "b", "position": [0, 0], "shapes": [{"type": "polygon",
       "vertices": [[0, 0], [2, 0], [1, 0.2], [2, 2], [0, 2]]}]})"),
