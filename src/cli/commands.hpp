@@ -14,6 +14,7 @@ struct VerifyOptions {
   std::filesystem::path root;  ///< the repository: srs/, scenes/, tests/, traceability/
   std::filesystem::path out;   ///< the report folder
   bool quick = false;          ///< short runs only (what ctest runs)
+  bool long_runs = false;      ///< the rain and pyramid for 1e6 steps each (hours)
 };
 
 /// `gamephysics verify`: the main job. The SRS audit (catalogue, functions, tests, dimensional
@@ -64,6 +65,17 @@ struct PeerOptions {
 /// `gamephysics peer`: a scene file run by Chipmunk2D or Box2D (verification/peers), written as
 /// the CSV of `simulate`.
 int peer(const PeerOptions& options);
+
+struct LongRunOptions {
+  std::filesystem::path scene;
+  long steps = 1000000;
+  std::optional<std::size_t> bodies;  ///< keep only the first this many bodies of the file
+};
+
+/// `gamephysics longrun`: steps a scene file `steps` times by its dt and checks that every state
+/// stays finite, that no body leaves the box it starts in and that the resident memory does not
+/// grow; prints the figures. Exits 0 when all hold, 1 when one fails, 2 for bad input.
+int longrun(const LongRunOptions& options);
 
 /// `gamephysics bench`: runs build/bin/gamephysics_bench (ours, Chipmunk2D, Box2D).
 int bench(bool quick);

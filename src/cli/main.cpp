@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   verify->add_option("--root", root, "Repository root")->check(CLI::ExistingDirectory);
   verify->add_option("--out", report, "Report folder (default out/report)");
   verify->add_flag("--quick", verification.quick, "Short runs only (what ctest runs)");
+  verify->add_flag("--long", verification.long_runs,
+                   "Long runs of rain1000 and pyramid20 at 1e6 steps each (hours)");
 
   bool check_only = false;
   std::string out;
@@ -68,6 +70,15 @@ int main(int argc, char** argv) {
   peer->add_option("--output-dt", peer_run.overrides.output_dt,
                    "Interval between output rows [s] (overrides the file)");
 
+  gp::cli::LongRunOptions long_run;
+  auto* longrun = app.add_subcommand(
+      "longrun", "Step a scene file N times: no NaN, no body leaving its box, no memory growth");
+  longrun->add_option("scene", long_run.scene, "Scene file (JSON)")->required();
+  longrun->add_option("--steps", long_run.steps, "Steps of the scene's dt (default 1e6)")
+      ->check(CLI::PositiveNumber);
+  longrun->add_option("--bodies", long_run.bodies, "Keep only the first N bodies of the file")
+      ->check(CLI::PositiveNumber);
+
   bool quick_bench = false;
   auto* bench = app.add_subcommand("bench", "Benchmarks: ours, Chipmunk2D and Box2D, one run");
   bench->add_flag("--quick", quick_bench, "Fewer repetitions");
@@ -87,6 +98,7 @@ int main(int argc, char** argv) {
     if (*bench) return gp::cli::bench(quick_bench);
     if (*simulate) return gp::cli::simulate(simulation);
     if (*oracle) return gp::cli::oracle(oracle_run);
+    if (*longrun) return gp::cli::longrun(long_run);
     return gp::cli::trace(
         root,
         out.empty() ? std::filesystem::path(root) / "traceability" : std::filesystem::path(out),
