@@ -32,6 +32,18 @@ TEST_CASE("Malformed JSON is reported at its line and column", "[FR:Verify-Physi
               "a literal");
 }
 
+TEST_CASE("A syntax error after a long token is reported with the token cut short",
+          "[FR:Verify-Physical_Constraints]") {
+  // A line break inside a 30000-character string: nlohmann quotes the whole token read so far.
+  // (Matching that message with std::regex overflowed the stack: verification/fuzz/crashes/.)
+  const std::string json = R"({"description": ")" + std::string(30000, 'a') + "\n\"}";
+  const std::string message =
+      "syntax error while parsing value - invalid string: control character U+000A (LF) must be "
+      "escaped to \\u000A or \\n; last read: '\"";
+  check_error(json, "line 2, column 0", "must be valid JSON",
+              message + std::string(200 - message.size(), 'a') + "...");
+}
+
 TEST_CASE("A number beyond the range of double is malformed JSON, not infinity",
           "[FR:Verify-Physical_Constraints]") {
   check_error(scene_with(R"({"name": "b", "position": [1e400, 0], "mass": 1})"), "(file)",

@@ -9,15 +9,13 @@
 
 namespace gp {
 
-namespace {
-// Long enough to show a vector or a short object in full, short enough for one line of a message.
-constexpr std::size_t kDescribedLength = 100;
-}  // namespace
+std::string shortened(const std::string& text, std::size_t length) {
+  if (text.size() <= length) return text;
+  return text.substr(0, length) + "...";
+}
 
 std::string describe(const nlohmann::json& value) {
-  const std::string text = value.dump();
-  if (text.size() <= kDescribedLength) return text;
-  return text.substr(0, kDescribedLength) + "...";
+  return shortened(value.dump());
 }
 
 std::string describe(double value) {
