@@ -10,6 +10,10 @@
 
 namespace gp::cli {
 
+/// Exit codes: a run or a check failed; the input was bad. 0 is success.
+inline constexpr int kRunFailed = 1;
+inline constexpr int kBadInput = 2;
+
 struct VerifyOptions {
   std::filesystem::path root;  ///< the repository: srs/, scenes/, tests/, traceability/
   std::filesystem::path out;   ///< the report folder

@@ -8,11 +8,6 @@
 
 namespace gp::cli {
 
-namespace {
-constexpr int kBadInput = 2;
-constexpr int kCheckFailed = 1;
-}  // namespace
-
 int longrun(const LongRunOptions& options) {
   const std::string file = options.scene.string();
   Scene scene;
@@ -41,7 +36,7 @@ int longrun(const LongRunOptions& options) {
               << row.measured << " (" << row.criterion << ")\n";
     passed = passed && row.passed;
   }
-  return passed ? 0 : kCheckFailed;
+  return passed ? 0 : kRunFailed;
 }
 
 }  // namespace gp::cli
