@@ -300,6 +300,10 @@ TEST_CASE("Overrides are checked like the file's values", "[FR:Verify-Physical_C
   overrides.integrator = "leapfrog";
   check_error(scene_with(""), "integrator", "must be one of symplectic_euler, velocity_verlet, rk4",
               "\"leapfrog\"", overrides);
+  // Not UTF-8: the value is shown with U+FFFD (this threw nlohmann's type_error before).
+  overrides.integrator = "\xff";
+  check_error(scene_with(""), "integrator", "must be one of symplectic_euler, velocity_verlet, rk4",
+              "\"\xef\xbf\xbd\"", overrides);
   overrides = {};
   overrides.duration = std::numeric_limits<double>::infinity();
   check_error(scene_with(""), "duration", "must be a finite number >= 0", "inf", overrides);

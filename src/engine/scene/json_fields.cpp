@@ -15,7 +15,9 @@ std::string shortened(const std::string& text, std::size_t length) {
 }
 
 std::string describe(const nlohmann::json& value) {
-  return shortened(value.dump());
+  // A string from the command line (an override) may be invalid UTF-8, which dump() would throw
+  // on: shown with U+FFFD in its place instead.
+  return shortened(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 std::string describe(double value) {
