@@ -16,6 +16,7 @@ packages=(
   python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
   nodejs               # npm: KaTeX for the audit page, playwright-core (tools/install-web.sh)
   chromium             # headless browser of the browser tests (tests/browser/)
+  clang libclang-rt-14-dev  # the libFuzzer target of ./test.sh (verification/fuzz)
 )
 
 missing=()

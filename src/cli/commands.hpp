@@ -10,12 +10,17 @@
 
 namespace gp::cli {
 
+/// Exit codes: a run or a check failed; the input was bad. 0 is success.
+inline constexpr int kRunFailed = 1;
+inline constexpr int kBadInput = 2;
+
 struct VerifyOptions {
   std::filesystem::path root;  ///< the repository: srs/, scenes/, tests/, traceability/
   std::filesystem::path out;   ///< the report folder
   bool quick = false;          ///< short runs only (what ctest runs)
   /// The JUnit report of a run of the Catch2 tests, whose results the audit page shows.
   std::optional<std::filesystem::path> test_results;
+  bool long_runs = false;      ///< the rain and pyramid for 1e6 steps each (hours)
 };
 
 /// `gamephysics verify`: the main job. The SRS audit (catalogue, functions, tests, dimensional
@@ -85,6 +90,16 @@ int view(const ViewOptions& options);
 /// report of the Catch2 tests) if given. Exits 1 when a traceability check fails.
 int audit(const std::filesystem::path& root, const std::filesystem::path& out,
           const std::optional<std::filesystem::path>& test_results);
+struct LongRunOptions {
+  std::filesystem::path scene;
+  long steps = 1000000;
+  std::optional<std::size_t> bodies;  ///< keep only the first this many bodies of the file
+};
+
+/// `gamephysics longrun`: steps a scene file `steps` times by its dt and checks that every state
+/// stays finite, that no body leaves the box it starts in and that the resident memory does not
+/// grow; prints the figures. Exits 0 when all hold, 1 when one fails, 2 for bad input.
+int longrun(const LongRunOptions& options);
 
 /// `gamephysics bench`: runs build/bin/gamephysics_bench (ours, Chipmunk2D, Box2D).
 int bench(bool quick);

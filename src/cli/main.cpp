@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
       ->add_option("--test-results", verification.test_results,
                    "JUnit report of the Catch2 tests (gamephysics_tests -r junit)")
       ->check(CLI::ExistingFile);
+  verify->add_flag("--long", verification.long_runs,
+                   "Long runs of rain1000 and pyramid20 at 1e6 steps each (hours)");
 
   bool check_only = false;
   std::string out;
@@ -95,6 +97,14 @@ int main(int argc, char** argv) {
       ->add_option("--test-results", audit_results,
                    "JUnit report of the Catch2 tests (gamephysics_tests -r junit)")
       ->check(CLI::ExistingFile);
+  gp::cli::LongRunOptions long_run;
+  auto* longrun = app.add_subcommand(
+      "longrun", "Step a scene file N times: no NaN, no body leaving its box, no memory growth");
+  longrun->add_option("scene", long_run.scene, "Scene file (JSON)")->required();
+  longrun->add_option("--steps", long_run.steps, "Steps of the scene's dt (default 1e6)")
+      ->check(CLI::PositiveNumber);
+  longrun->add_option("--bodies", long_run.bodies, "Keep only the first N bodies of the file")
+      ->check(CLI::PositiveNumber);
 
   bool quick_bench = false;
   auto* bench = app.add_subcommand("bench", "Benchmarks: ours, Chipmunk2D and Box2D, one run");
@@ -117,6 +127,7 @@ int main(int argc, char** argv) {
     if (*view) return gp::cli::view(view_run);
     if (*audit) return gp::cli::audit(root, audit_out, audit_results);
     if (*oracle) return gp::cli::oracle(oracle_run);
+    if (*longrun) return gp::cli::longrun(long_run);
     return gp::cli::trace(
         root,
         out.empty() ? std::filesystem::path(root) / "traceability" : std::filesystem::path(out),

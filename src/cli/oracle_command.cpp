@@ -15,11 +15,6 @@
 
 namespace gp::cli {
 
-namespace {
-constexpr int kBadInput = 2;
-constexpr int kRunFailed = 1;
-}  // namespace
-
 int oracle(const OracleCommandOptions& options) {
   const std::string file = options.scene.string();
   verification::OracleOptions settings;

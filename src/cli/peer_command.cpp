@@ -12,11 +12,6 @@
 
 namespace gp::cli {
 
-namespace {
-constexpr int kBadInput = 2;
-constexpr int kRunFailed = 1;
-}  // namespace
-
 int peer(const PeerOptions& options) {
   const std::string file = options.scene.string();
   const auto engine = peers::engine_from_name(options.engine);

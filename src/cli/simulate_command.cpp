@@ -14,9 +14,6 @@ namespace gp::cli {
 
 namespace {
 
-constexpr int kBadInput = 2;
-constexpr int kRunFailed = 1;
-
 void explain(const std::string& file, const Scene& scene, const Space& space) {
   std::cout << "pipeline of a step of " << file << " (" << space.body_count()
             << " bodies, dt = " << scene.dt << " s, "

@@ -46,6 +46,7 @@ int verify(const VerifyOptions& options) {
   suite.root = options.root;
   suite.out = options.out;
   suite.quick = options.quick;
+  suite.long_runs = options.long_runs;
   suite.progress = &std::cout;
   std::cout << "Verification suite against the SUNDIALS oracle ("
             << (options.quick ? "quick" : "full") << "):\n";

@@ -20,9 +20,6 @@ namespace gp::cli {
 
 namespace {
 
-constexpr int kBadInput = 2;
-constexpr int kRunFailed = 1;
-
 // The scene's free-text "description", which load_scene does not keep; the file is already known
 // to be valid JSON.
 std::string description_of(const std::filesystem::path& file) {

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -164,4 +165,30 @@ TEST_CASE("A warmed-up sweep and prune reuses its pair buffer", "[FR:Determine-C
   CHECK(next.size() == 99);
   CHECK(next.data() == buffer);
   CHECK(next.capacity() == capacity);
+}
+
+TEST_CASE("Boxes reaching the largest doubles are paired without overflow",
+          "[FR:Determine-Collisions]") {
+  // The top of the tall box is far beyond any band: its band number is clamped, not overflowed
+  // (an undefined conversion the sanitizers report).
+  const std::vector<BroadphaseProxy> proxies{{0, Aabb{{-1.0, -1e308}, {1.0, 1.7e308}}, false},
+                                             {1, Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
+                                             {2, Aabb{{5.0, 0.0}, {6.0, 1.0}}, false}};
+  gp::SweepAndPrune broadphase(0.0);
+  CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, 0.0));
+  CHECK(all_overlapping_pairs(proxies, 0.0) == std::vector<ProxyPair>{{0, 1}});
+}
+
+TEST_CASE("A non-finite box, from a state about to be reported non-finite, is paired with none",
+          "[FR:Determine-Collisions]") {
+  std::vector<BroadphaseProxy> proxies{{0, Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
+                                       {1, Aabb{{0.5, 0.5}, {1.5, 1.5}}, false}};
+  gp::SweepAndPrune broadphase(0.0);
+  REQUIRE(broadphase.find_pairs(proxies).size() == 1);
+  proxies[1].bounds.max.y() = std::numeric_limits<double>::quiet_NaN();
+  CHECK(broadphase.find_pairs(proxies).empty());
+  proxies[1].bounds = Aabb{{0.5, -1.7e308}, {1.5, 1.0}};
+  proxies[0].bounds = Aabb{{0.0, 1.7e308}, {1.0, 1.7e308}};
+  // Bottoms 3.4e308 apart: their span overflows a double.
+  CHECK(broadphase.find_pairs(proxies).empty());
 }

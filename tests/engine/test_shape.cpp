@@ -137,7 +137,13 @@ TEST_CASE("A clockwise polygon is reordered counter-clockwise with outward unit 
 
 TEST_CASE("Repeated consecutive vertices of a polygon are merged", "[FR:Determine-Collisions]") {
   const std::vector<Vec2> repeated{{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
-  CHECK(polygon_of(Shape::polygon(repeated)).count == 4);
+  const Shape merged = Shape::polygon(repeated);
+  CHECK(polygon_of(merged).count == 4);
+  // The unit square's mass properties: area 1, centroid (½, ½), polar moment 1/6.
+  const gp::MassProperties mass = gp::mass_properties(merged);
+  CHECK(mass.area == Approx(1.0).epsilon(1e-14));
+  check_near(mass.centroid, {0.5, 0.5});
+  CHECK(mass.polar_moment == Approx(1.0 / 6.0).epsilon(1e-14));
 }
 
 TEST_CASE("Polygons breaking a rule are rejected with the rule and the value",
@@ -163,6 +169,9 @@ TEST_CASE("Polygons breaking a rule are rejected with the rule and the value",
   }
   SECTION("collinear") {
     rejects({{0, 0}, {1, 1}, {3, 3}}, "area must be > 0");
+  }
+  SECTION("a vertex repeated away from its neighbour, so the outline crosses itself") {
+    rejects({{0, 0}, {2, 0}, {2, 2}, {0, 2}, {2, 0}}, "strictly convex");
   }
   SECTION("fewer than 3 distinct vertices") {
     rejects({{0, 0}, {1, 1}, {1, 1}, {0, 0}}, "at least 3 distinct vertices, got 2");

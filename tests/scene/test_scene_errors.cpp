@@ -32,10 +32,36 @@ TEST_CASE("Malformed JSON is reported at its line and column", "[FR:Verify-Physi
               "a literal");
 }
 
+TEST_CASE("A syntax error after a long token is reported with the token cut short",
+          "[FR:Verify-Physical_Constraints]") {
+  // A line break inside a 30000-character string: nlohmann quotes the whole token read so far.
+  // (Matching that message with std::regex overflowed the stack: verification/fuzz/crashes/.)
+  const std::string json = R"({"description": ")" + std::string(30000, 'a') + "\n\"}";
+  const std::string message =
+      "syntax error while parsing value - invalid string: control character U+000A (LF) must be "
+      "escaped to \\u000A or \\n; last read: '\"";
+  check_error(json, "line 2, column 0", "must be valid JSON",
+              message + std::string(200 - message.size(), 'a') + "...");
+}
+
 TEST_CASE("A number beyond the range of double is malformed JSON, not infinity",
           "[FR:Verify-Physical_Constraints]") {
   check_error(scene_with(R"({"name": "b", "position": [1e400, 0], "mass": 1})"), "(file)",
               "must be valid JSON", "number overflow parsing '1e400'");
+}
+
+TEST_CASE("A document nested deeper than 64 levels is refused where it goes too deep",
+          "[FR:Verify-Physical_Constraints]") {
+  // Describing so deep a value in a message would recurse once per level: 30000 levels
+  // overflowed the stack (verification/fuzz/crashes/ keeps two such inputs).
+  const std::string deep = std::string(30000, '[') + std::string(30000, ']');
+  // The path is that of the 64th level, whose first element would open the 65th.
+  std::string path;
+  for (int level = 0; level < 63; ++level) path += "[0]";
+  check_error(R"({"dt": 0.01, "duration": 1, "bodies": )" + deep + "}", "bodies" + path,
+              "must nest arrays and objects at most 64 deep (scenes need 7)", "level 65");
+  check_error(deep, path + "[0]", "must nest arrays and objects at most 64 deep (scenes need 7)",
+              "level 65");
 }
 
 TEST_CASE("The file must exist and hold a JSON object", "[FR:Verify-Physical_Constraints]") {
@@ -193,7 +219,10 @@ TEST_CASE("Settings are checked", "[FR:Verify-Physical_Constraints]") {
   check_error(R"({"restitution_threshold": -0.1, "dt": 0.01, "duration": 1, "bodies": []})",
               "restitution_threshold", "must be >= 0", "-0.10000000000000001");
   check_error(R"({"velocity_iterations": -1, "dt": 0.01, "duration": 1, "bodies": []})",
-              "velocity_iterations", "must be >= 0", "-1");
+              "velocity_iterations", "must be in [0, 1000]", "-1");
+  // Two billion passes a step hung the run (a fuzz input kept in verification/fuzz/crashes/).
+  check_error(R"({"position_iterations": 2000000000, "dt": 0.01, "duration": 1, "bodies": []})",
+              "position_iterations", "must be in [0, 1000]", "2000000000");
 }
 
 TEST_CASE("The SRS data constraints on bodies name the field of the file",
@@ -220,6 +249,25 @@ TEST_CASE("The SRS data constraints on bodies name the field of the file",
               "is required for a dynamic body without area", "none");
 }
 
+TEST_CASE("Shapes whose mass overflows or underflows a double are refused",
+          "[FR:Verify-Physical_Constraints]") {
+  // Finite inputs, but a disc of radius 1e300 has an infinite area, so no centre of mass: this
+  // escaped as std::invalid_argument from Space::add_body (verification/fuzz/crashes/).
+  check_error(scene_with(R"({"name": "b", "position": [0, 0],
+      "shapes": [{"type": "circle", "radius": 1e300}]})"),
+              "bodies[0].shapes",
+              "must give the body a finite mass (> 0 if dynamic), centre of mass and moment of "
+              "inertia",
+              "mass inf, moment nan, centre [nan, nan]");
+  // A disc of radius 1e-200 has area 0 as a double: a dynamic body of no mass.
+  check_error(scene_with(R"({"name": "b", "position": [0, 0],
+      "shapes": [{"type": "circle", "radius": 1e-200}]})"),
+              "bodies[0].shapes",
+              "must give the body a finite mass (> 0 if dynamic), centre of mass and moment of "
+              "inertia",
+              "mass 0, moment 0, centre [0, 0]");
+}
+
 TEST_CASE("Degenerate shapes are reported at the shape's path",
           "[FR:Verify-Physical_Constraints]") {
   check_error(scene_with(R"({"name": "a", "position": [0, 0], "mass": 1},
@@ -229,6 +277,12 @@ TEST_CASE("Degenerate shapes are reported at the shape's path",
   check_error(scene_with(R"({"name": "b", "position": [0, 0],
       "shapes": [{"type": "segment", "a": [1, 1], "b": [1, 1]}]})"),
               "bodies[0].shapes[0]", "segment ends must be distinct", "a = (1, 1) and b = (1, 1)");
+  check_error(scene_with(R"({"name": "b", "position": [0, 0],
+      "shapes": [{"type": "polygon", "vertices": [[0, 0], [1, 1], [3, 3]]}]})"),
+              "bodies[0].shapes[0]", "polygon area must be > 0 (vertices not all collinear)", "0");
+  check_error(scene_with(R"({"name": "b", "position": [0, 0],
+      "shapes": [{"type": "polygon", "vertices": [[0, 0], [1, 1], [1, 1], [0, 0]]}]})"),
+              "bodies[0].shapes[0]", "polygon needs at least 3 distinct vertices", "2");
   // A message without ", got": the shape itself is the offending value.
   check_error(scene_with(R"({"name": "b", "position": [0, 0], "shapes": [{"type": "polygon",
       "vertices": [[0, 0], [2, 0], [1, 0.2], [2, 2], [0, 2]]}]})"),
@@ -246,6 +300,10 @@ TEST_CASE("Overrides are checked like the file's values", "[FR:Verify-Physical_C
   overrides.integrator = "leapfrog";
   check_error(scene_with(""), "integrator", "must be one of symplectic_euler, velocity_verlet, rk4",
               "\"leapfrog\"", overrides);
+  // Not UTF-8: the value is shown with U+FFFD (this threw nlohmann's type_error before).
+  overrides.integrator = "\xff";
+  check_error(scene_with(""), "integrator", "must be one of symplectic_euler, velocity_verlet, rk4",
+              "\"\xef\xbf\xbd\"", overrides);
   overrides = {};
   overrides.duration = std::numeric_limits<double>::infinity();
   check_error(scene_with(""), "duration", "must be a finite number >= 0", "inf", overrides);

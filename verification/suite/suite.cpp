@@ -18,6 +18,7 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
   add(convergence_checks(scenes, o, data));
   add(conservation_checks(scenes, o));
   add(hard_case_checks(o));
+  add(long_run_checks(o));
   add(peer_checks(scenes, o, data));
   if (!o.quick) add(work_precision_checks(scenes, o, data));
   write_report(o.out, checks, data, {});

@@ -17,6 +17,7 @@ struct SuiteOptions {
   std::filesystem::path root;        ///< the repository: scenes/, srs/, tests/, traceability/
   std::filesystem::path out;         ///< where the report goes (out/report)
   bool quick = false;                ///< short runs only: what ctest runs
+  bool long_runs = false;            ///< the long runs at 1e6 steps (hours): `verify --long`
   std::ostream* progress = nullptr;  ///< a line per scene and stage
 };
 
@@ -39,6 +40,7 @@ std::vector<Check> convergence_checks(const std::vector<NamedScene>& scenes, con
 std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
                                        const SuiteOptions& o);
 std::vector<Check> hard_case_checks(const SuiteOptions& o);
+std::vector<Check> long_run_checks(const SuiteOptions& o);
 std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
                                CsvFiles& data);
 std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,

@@ -1,6 +1,7 @@
 #include "engine/collision/broadphase.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace gp {
 
@@ -9,6 +10,13 @@ const std::vector<ProxyPair>& SweepAndPrune::find_pairs(std::span<const Broadpha
   entries_.clear();
   candidates_tested_ = 0;
   if (proxies.empty()) return pairs_;
+  // A non-finite box comes from a state that the step reports as non-finite (NumericalError); the
+  // band arithmetic below would convert NaN or infinity to an integer, which is undefined. The
+  // same holds when the boxes span more than the range of a double.
+  const auto finite = [](const BroadphaseProxy& p) {
+    return p.bounds.min.allFinite() && p.bounds.max.allFinite();
+  };
+  if (!std::all_of(proxies.begin(), proxies.end(), finite)) return pairs_;
 
   // Bands start at the lowest grown bottom. Bands above the highest bottom hold no overlap's
   // bottom, so no box needs entries there.
@@ -19,6 +27,7 @@ const std::vector<ProxyPair>& SweepAndPrune::find_pairs(std::span<const Broadpha
     band_origin_ = std::min(band_origin_, bottom);
     highest_bottom = std::max(highest_bottom, bottom);
   }
+  if (!std::isfinite(highest_bottom - band_origin_)) return pairs_;
   band_height_ = choose_band_height(proxies, highest_bottom - band_origin_);
   const std::int64_t last_band = band_of(highest_bottom);
 

@@ -14,7 +14,7 @@ namespace gp {
 /// One shape's entry for a broadphase step.
 struct BroadphaseProxy {
   std::uint32_t id;  ///< the caller's handle for the shape, reported back in pairs
-  Aabb bounds;       ///< m, world, finite
+  Aabb bounds;       ///< m, world; a non-finite one makes find_pairs report no pair
   bool is_static;    ///< its body never moves: two static proxies are never paired
 };
 
@@ -65,7 +65,12 @@ class SweepAndPrune {
   /// cannot make more entries than there are proxies.
   double choose_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range);
   std::int64_t band_of(double y) const {
-    return static_cast<std::int64_t>((y - band_origin_) / band_height_);
+    // A top far above the bottoms (up to the largest double, over a height that may itself be
+    // infinite) lies in a band past the last one that matters: clamped, NaN included, so that the
+    // conversion stays defined.
+    constexpr double kBeyondAnyBand = 0x1p62;
+    const double band = (y - band_origin_) / band_height_;
+    return static_cast<std::int64_t>(band < kBeyondAnyBand ? band : kBeyondAnyBand);
   }
   void sweep();
 

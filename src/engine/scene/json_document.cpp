@@ -1,14 +1,21 @@
 #include "engine/scene/json_document.hpp"
 
-#include <regex>
 #include <set>
 #include <vector>
 
 #include "engine/input_error.hpp"
+#include "engine/scene/json_fields.hpp"
 
 namespace gp {
 
 namespace {
+
+// The scene format nests 7 levels deep (root, bodies, a body, shapes, a shape, vertices, a
+// vertex). Far deeper documents are refused while parsing: describing an offending value in an
+// error message, like copying one, recurses once per level and would overflow the stack.
+constexpr std::size_t kMaxDepth = 64;
+// nlohmann's messages quote the last token read, which may be the rest of the file.
+constexpr std::size_t kMessageLength = 200;
 
 /// Where the parser is: one level per open object or array, enough to name a key's JSON path.
 class PathTracker {
@@ -20,6 +27,12 @@ class PathTracker {
       case Event::object_start:
       case Event::array_start:
         count_array_element();
+        if (levels_.size() == kMaxDepth) {
+          throw InputError(levels_.empty() ? "(file)" : path(),
+                           "must nest arrays and objects at most " + std::to_string(kMaxDepth) +
+                               " deep (scenes need 7)",
+                           "level " + std::to_string(kMaxDepth + 1));
+        }
         levels_.push_back({event == Event::array_start, {}, {}, 0});
         break;
       case Event::object_end:
@@ -30,7 +43,7 @@ class PathTracker {
         Level& object = levels_.back();
         object.key = parsed.get<std::string>();
         if (!object.keys.insert(object.key).second) {
-          throw InputError(path(), "is given twice in the same object", parsed.dump());
+          throw InputError(path(), "is given twice in the same object", describe(parsed));
         }
         break;
       }
@@ -69,24 +82,38 @@ class PathTracker {
   std::vector<Level> levels_;
 };
 
+/// nlohmann's message less its "[json.exception.parse_error.101] " prefix.
+std::string without_id(const std::string& message) {
+  const std::size_t end = message.find("] ");
+  return message.starts_with('[') && end != std::string::npos ? message.substr(end + 2) : message;
+}
+
+/// The error for nlohmann's parse_error, whose message reads "... at line L, column C: what went
+/// wrong; last read: '<token>'". Found with plain searches: std::regex recursed once per character
+/// of the message and overflowed the stack on a 22 kB token (verification/fuzz/crashes/).
+InputError syntax_error(const std::string& message) {
+  const std::size_t at = message.find(" at line ");
+  const std::size_t colon = at == std::string::npos ? at : message.find(": ", at);
+  if (colon == std::string::npos) {
+    return InputError("(file)", "must be valid JSON",
+                      shortened(without_id(message), kMessageLength));
+  }
+  const std::size_t line = at + std::string_view(" at ").size();
+  return InputError(message.substr(line, colon - line), "must be valid JSON",
+                    shortened(message.substr(colon + 2), kMessageLength));
+}
+
 }  // namespace
 
 nlohmann::json parse_json_document(const std::string& text) {
   try {
     return nlohmann::json::parse(text, PathTracker{});
   } catch (const nlohmann::json::parse_error& e) {
-    // nlohmann's message carries the position as "at line L, column C: what went wrong".
-    static const std::regex position(R"(at (line \d+, column \d+): (.*)$)");
-    std::smatch match;
-    const std::string message = e.what();
-    if (std::regex_search(message, match, position)) {
-      throw InputError(match[1].str(), "must be valid JSON", match[2].str());
-    }
-    throw InputError("(file)", "must be valid JSON", message);
+    throw syntax_error(e.what());
   } catch (const nlohmann::json::exception& e) {
     // e.g. "[json.exception.out_of_range.406] number overflow parsing '1e400'": no position.
-    static const std::regex id(R"(^\[[^\]]*\] )");
-    throw InputError("(file)", "must be valid JSON", std::regex_replace(e.what(), id, ""));
+    throw InputError("(file)", "must be valid JSON",
+                     shortened(without_id(e.what()), kMessageLength));
   }
 }
 

@@ -9,15 +9,15 @@
 
 namespace gp {
 
-namespace {
-// Long enough to show a vector or a short object in full, short enough for one line of a message.
-constexpr std::size_t kDescribedLength = 100;
-}  // namespace
+std::string shortened(const std::string& text, std::size_t length) {
+  if (text.size() <= length) return text;
+  return text.substr(0, length) + "...";
+}
 
 std::string describe(const nlohmann::json& value) {
-  const std::string text = value.dump();
-  if (text.size() <= kDescribedLength) return text;
-  return text.substr(0, kDescribedLength) + "...";
+  // A string from the command line (an override) may be invalid UTF-8, which dump() would throw
+  // on: shown with U+FFFD in its place instead.
+  return shortened(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 std::string describe(double value) {

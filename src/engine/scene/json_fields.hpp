@@ -14,6 +14,9 @@
 
 namespace gp {
 
+/// Text as it appears in error messages: cut to `length` characters, with "...", when longer. The
+/// default shows a vector or a short object in full and keeps a message on one line.
+std::string shortened(const std::string& text, std::size_t length = 100);
 /// A JSON value as it appears in error messages: its JSON text, cut short when long.
 std::string describe(const nlohmann::json& value);
 /// A number as it appears in error messages: 17 significant digits, so that it round-trips.

@@ -110,7 +110,11 @@ std::vector<BodyDef> read_bodies(const JsonObject& root) {
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& file, const SceneOverrides& overrides) {
-  nlohmann::json document = parse_json_document(read_text(file));
+  return parse_scene(read_text(file), overrides);
+}
+
+Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
+  nlohmann::json document = parse_json_document(text);
   apply(overrides, document);
   const JsonObject root(document, "");
   root.allow_only({"description", "gravity", "G", "integrator", "dt", "duration", "output_dt",

@@ -38,6 +38,10 @@ struct SceneOverrides {
 /// a whole). The SRS data constraints on bodies are checked by build_space.
 Scene load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
 
+/// The same reading and checks for the text of a scene file already in memory (the fuzzer and
+/// the replay of its inputs feed bytes, not files). Throws InputError as load_scene does.
+Scene parse_scene(const std::string& text, const SceneOverrides& overrides = {});
+
 /// A space with the scene's settings and bodies, added in order so that body i of the file is
 /// BodyId i. Throws InputError naming "bodies[i].field" for a body that breaks an SRS data
 /// constraint (Space::add_body).

@@ -3,14 +3,18 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "engine/input_error.hpp"
+#include "engine/setup/mass_setup.hpp"
+#include "engine/setup/shape_offset.hpp"
 
 namespace gp {
 
 namespace {
 
 std::string text(double value) {
+  if (std::isnan(value)) return "nan";  // the sign of a NaN depends on how it was made
   std::ostringstream out;
   out.precision(17);
   out << value;
@@ -32,6 +36,41 @@ void finite(const Vec2& value, const std::string& field) {
 void positive(double value, const std::string& field, const std::string& why) {
   finite(value, field);
   if (!(value > 0.0)) throw InputError(field, "must be > 0 (" + why + ")", text(value));
+}
+
+// Iterations of the contact solver per step at most: a step's work grows with them, and 1000 is
+// a hundred times the default.
+constexpr int kMaxIterations = 1000;
+
+void iterations(int value, const std::string& field) {
+  if (value < 0 || value > kMaxIterations) {
+    throw InputError(field, "must be in [0, " + std::to_string(kMaxIterations) + "]", text(value));
+  }
+}
+
+/// The mass, centre of mass and moment of inertia the engine derives from the shapes, and the
+/// shapes placed about that centre, must be finite, and a dynamic body's mass > 0: finite inputs
+/// can still overflow them (a disc of radius 1e300 has an infinite area) or underflow the mass to
+/// 0 (a disc of radius 1e-200).
+void derived_mass(const BodyDef& def, const std::string& prefix) {
+  const MassSetup setup = mass_setup(def);
+  const bool dynamic = def.type == BodyType::Dynamic;
+  if (!std::isfinite(setup.mass) || !std::isfinite(setup.moment) ||
+      !setup.local_center.allFinite() || (dynamic && !(setup.mass > 0.0))) {
+    throw InputError(prefix + ".shapes",
+                     "must give the body a finite mass (> 0 if dynamic), centre of mass and "
+                     "moment of inertia",
+                     "mass " + text(setup.mass) + ", moment " + text(setup.moment) + ", centre " +
+                         text(setup.local_center));
+  }
+  for (std::size_t k = 0; k < def.shapes.size(); ++k) {
+    try {
+      translated(def.shapes[k].shape, -setup.local_center);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(prefix + ".shapes[" + std::to_string(k) + "]",
+                       "must stay finite about the body's centre of mass", e.what());
+    }
+  }
 }
 
 }  // namespace
@@ -73,6 +112,7 @@ void validate_body(const BodyDef& def, const std::string& prefix) {
   if (def.type == BodyType::Dynamic && !def.mass && !has_area) {
     throw InputError(prefix + ".mass", "is required for a dynamic body without area", "none");
   }
+  derived_mass(def, prefix);
 }
 
 void validate_settings(const Settings& settings) {
@@ -81,12 +121,8 @@ void validate_settings(const Settings& settings) {
     finite(*settings.G, "G");
     if (*settings.G < 0.0) throw InputError("G", "must be >= 0", text(*settings.G));
   }
-  if (settings.velocity_iterations < 0) {
-    throw InputError("velocity_iterations", "must be >= 0", text(settings.velocity_iterations));
-  }
-  if (settings.position_iterations < 0) {
-    throw InputError("position_iterations", "must be >= 0", text(settings.position_iterations));
-  }
+  iterations(settings.velocity_iterations, "velocity_iterations");
+  iterations(settings.position_iterations, "position_iterations");
 }
 
 void validate_step(double dt, const std::string& field) {

@@ -1,0 +1,62 @@
+#include "verification/fuzz/scene_input.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "engine/input_error.hpp"
+#include "engine/numerical_error.hpp"
+#include "engine/output/trajectory.hpp"
+#include "engine/scene/run.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace gp::fuzz {
+
+namespace {
+
+std::size_t shape_count(const Scene& scene) {
+  std::size_t count = 0;
+  for (const BodyDef& body : scene.bodies) count += body.shapes.size();
+  return count;
+}
+
+/// The scene cut to at most max_steps steps and max_outputs output instants: run_steps takes
+/// at least one step per output interval, so both bound the work.
+Scene bounded(Scene scene, const SceneInputLimits& limits) {
+  scene.duration = std::min(scene.duration, limits.max_steps * scene.dt);
+  scene.output_dt = std::max(scene.output_dt, scene.duration / limits.max_outputs);
+  return scene;
+}
+
+}  // namespace
+
+SceneInputOutcome run_scene_input(const std::string& text, const SceneInputLimits& limits) {
+  try {
+    const Scene scene = parse_scene(text);
+    const auto space = build_space(scene);
+    if (scene.bodies.size() > limits.max_bodies || shape_count(scene) > limits.max_shapes) {
+      return SceneInputOutcome::kRan;
+    }
+    std::ostringstream csv_text;
+    TrajectoryCsv csv(csv_text);
+    run_scene(*space, bounded(scene, limits), [&](double t) { csv.write(t, *space); });
+    return SceneInputOutcome::kRan;
+  } catch (const InputError&) {
+    return SceneInputOutcome::kInputError;
+  } catch (const NumericalError&) {
+    return SceneInputOutcome::kNumericalError;
+  }
+}
+
+std::string outcome_name(SceneInputOutcome outcome) {
+  switch (outcome) {
+    case SceneInputOutcome::kRan:
+      return "ran";
+    case SceneInputOutcome::kInputError:
+      return "input_error";
+    case SceneInputOutcome::kNumericalError:
+      return "numerical_error";
+  }
+  return "unknown";
+}
+
+}  // namespace gp::fuzz
