@@ -41,11 +41,18 @@ double Ballistic::angular_velocity(BodyId body, double tau) const {
          dd::angular_velocity_change_from_acceleration(acceleration.angular[body], tau);
 }
 
-double speed_bound(const ShapeRecord& r, const Ballistic& m, double h) {
-  const BodyId b = r.body;
-  return m.start.velocity[b].norm() + m.acceleration.linear[b].norm() * h +
-         (std::abs(m.start.angular_velocity[b]) + std::abs(m.acceleration.angular[b]) * h) *
-             reach(r.local);
+double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Ballistic& m,
+                           double h) {
+  // Translation counts relative to each other (two discs falling side by side do not close),
+  // turning for each body on its own.
+  const auto turning = [&m, h](const ShapeRecord& r) {
+    return (std::abs(m.start.angular_velocity[r.body]) +
+            std::abs(m.acceleration.angular[r.body]) * h) *
+           reach(r.local);
+  };
+  return (m.start.velocity[a.body] - m.start.velocity[b.body]).norm() +
+         (m.acceleration.linear[a.body] - m.acceleration.linear[b.body]).norm() * h + turning(a) +
+         turning(b);
 }
 
 namespace {
@@ -67,7 +74,7 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
     return lo;
   }
   // Apart at both ends: they can only have met in between if they could close d0 + d1 in time.
-  const double bound = speed_bound(a, motion, h) + speed_bound(b, motion, h);
+  const double bound = closing_speed_bound(a, b, motion, h);
   if (bound * (h - t0) < d0 + d1) return std::nullopt;
   // Conservative advancement: never step further than the gap could close.
   // Down to 1e-12 m, so that the impact's position is as exact as a bracketed root's; a slow,

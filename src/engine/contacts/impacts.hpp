@@ -37,8 +37,10 @@ struct Ballistic {
   double angular_velocity(BodyId body, double tau) const;
 };
 
-/// Fastest any point of shape `r` can move during a step of h [s] along `motion`, a bound [m/s].
-double speed_bound(const ShapeRecord& r, const Ballistic& motion, double h);
+/// Fastest any point of shape `a` can move towards any point of shape `b` during a step of h [s]
+/// along `motion`, a bound [m/s].
+double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Ballistic& motion,
+                           double h);
 
 /// Which pairs the time-of-impact search leaves to the contact solver.
 struct ImpactFilter {

@@ -191,7 +191,7 @@ bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, dou
           // Its path is the solver's, not known here: safe to leave to the next step only if
           // neither can have moved through the other by then.
           const double reach_left =
-              (speed_bound(shapes_[i], motion, h) + speed_bound(shapes_[k], motion, h)) * (h - tau);
+              closing_speed_bound(shapes_[i], shapes_[k], motion, h) * (h - tau);
           if (reach_left >=
               std::min(half_thickness(shapes_[i].local), half_thickness(shapes_[k].local))) {
             return false;
