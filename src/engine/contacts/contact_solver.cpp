@@ -238,7 +238,7 @@ void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& spec
                        const Settings& settings, MotionState& s, SpeculativeScratch& scratch) {
   // An impact's impulse fades as it spreads through a heap: the resting contacts up to this many
   // contacts away from it are solved with it, the rest of the heap holds still for it.
-  constexpr int kReach = 4;
+  constexpr int kReach = 2;
   scratch.reached.assign(s.position.size(), 0);
   scratch.included.assign(resting.size(), 0);
   scratch.nearby.clear();
