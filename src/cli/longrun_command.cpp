@@ -23,12 +23,15 @@ int longrun(const LongRunOptions& options) {
   std::cout << file << ": " << scene.bodies.size() << " bodies, " << options.steps
             << " steps of dt = " << scene.dt << " s, box [" << box.lower.x() << ", "
             << box.upper.x() << "] x [" << box.lower.y() << ", " << box.upper.y() << "] m\n";
-  const auto result =
-      verification::long_run(scene, options.steps, verification::kMemorySamples, box);
   std::cout << "  resident memory [MiB] by step:";
-  for (const auto& sample : result.memory) {
-    std::cout << " " << sample.step << ":" << verification::figure(sample.rss_mib);
-  }
+  // Each sample as it is taken: a run of hours shows its progress, and what it had measured
+  // survives its being stopped.
+  const auto result = verification::long_run(scene, options.steps, verification::kMemorySamples,
+                                             box, [](const verification::MemorySample& sample) {
+                                               std::cout << " " << sample.step << ":"
+                                                         << verification::figure(sample.rss_mib)
+                                                         << std::flush;
+                                             });
   std::cout << "\n";
   bool passed = true;
   for (const auto& row : verification::long_run_rows(file, result)) {

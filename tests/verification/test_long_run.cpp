@@ -3,6 +3,7 @@
 // from the first tenth of the run. The short rain here is what `verify --quick` runs longer.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <vector>
 
 #include "verification/long_run/long_run.hpp"
 
@@ -29,13 +30,17 @@ TEST_CASE("A long run finds a body that leaves its box", "[NFR:Correctness]") {
   scene.bodies[1].velocity = {100.0, 0.0};
   scene.bodies[1].shapes.clear();  // a point mass passes through the wall
   scene.bodies[1].mass = 1.0;
+  std::vector<long> sampled_steps;
   const auto result =
-      gp::verification::long_run(scene, 100, 10, gp::verification::starting_box(scene, 1.0));
+      gp::verification::long_run(scene, 100, 10, gp::verification::starting_box(scene, 1.0),
+                                 [&](const auto& sample) { sampled_steps.push_back(sample.step); });
   // From x = −29.25 m at 100 m/s it passes x = 41 m after 0.7025 s: in step 43 of 1/60 s.
   CHECK(result.first_outside == "body 'ball0000' at step 43");
   CHECK(result.non_finite.empty());
   CHECK(result.steps_done == 100);
   CHECK(result.memory.size() == 11);
+  // The start and every tenth of the run, told as they are taken.
+  CHECK(sampled_steps == std::vector<long>{0, 10, 20, 30, 40, 50, 60, 70, 80, 90, 100});
   CHECK(result.max_abs_coordinate == Approx(-29.25 + 100.0 * 100 / 60.0));
 }
 

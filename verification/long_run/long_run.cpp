@@ -51,10 +51,12 @@ double LongRunResult::memory_growth_mib() const {
   return settled == memory.end() ? 0.0 : memory.back().rss_mib - settled->rss_mib;
 }
 
-LongRunResult long_run(const Scene& scene, long steps, int samples, const Box& box) {
+LongRunResult long_run(const Scene& scene, long steps, int samples, const Box& box,
+                       const LongRunProgress& progress) {
   LongRunResult result;
   const auto space = build_space(scene);
   result.memory.push_back({0, resident_mib()});
+  if (progress) progress(result.memory.back());
   const long interval = std::max(1L, steps / std::max(1, samples));
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -73,6 +75,7 @@ LongRunResult long_run(const Scene& scene, long steps, int samples, const Box& b
       }
       if (result.steps_done % interval == 0 || result.steps_done == steps) {
         result.memory.push_back({result.steps_done, resident_mib()});
+        if (progress) progress(result.memory.back());
       }
     }
   } catch (const NumericalError& e) {

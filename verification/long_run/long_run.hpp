@@ -5,6 +5,7 @@
 // FR:Determine-Collision-Response-Over-Time).
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,10 +57,14 @@ inline constexpr int kMemorySamples = 20;
 /// keeping freed pages, not for a leak.
 inline constexpr double kMaxMemoryGrowthMib = 2.0;
 
+/// Called with each memory sample as it is taken, e.g. to show the progress of an hour-long run.
+using LongRunProgress = std::function<void(const MemorySample&)>;
+
 /// Builds the scene's space and steps it `steps` times by scene.dt (the scene's duration is not
 /// used), checking every body against `box` after each step and sampling memory `samples` times.
 /// Stops early at a non-finite state.
-LongRunResult long_run(const Scene& scene, long steps, int samples, const Box& box);
+LongRunResult long_run(const Scene& scene, long steps, int samples, const Box& box,
+                       const LongRunProgress& progress = {});
 
 /// The report rows of a run labelled `label`: finite states, the box, memory (checked) and the
 /// wall time (reported).
