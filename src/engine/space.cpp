@@ -194,6 +194,13 @@ double Space::substep(double h) {
 }
 
 void Space::advance(double h) {
+  // Impacts among touching bodies happen at the start of the step, before its forces; the
+  // solver's passes bound their passes too.
+  if (!contacts_.empty() &&
+      propagate_impacts(contacts_, inertia_, settings_, settings_.velocity_iterations, state_)) {
+    start_.velocity = state_.velocity;
+    start_.angular_velocity = state_.angular_velocity;
+  }
   integrator_->advance(forces_, time_, h, state_);
   move_kinematic(h);
   if (!contacts_.empty()) {

@@ -209,3 +209,20 @@ TEST_CASE("Collisions conserve linear momentum in a closed box of discs",
   CHECK_THAT((totals(space).momentum - before.momentum).norm(), WithinAbs(0.0, 1e-11));
   CHECK(totals(space).energy <= before.energy * (1 + 1e-12));  // C_R < 1 loses, never gains
 }
+
+TEST_CASE("A Newton's cradle of touching balls passes the momentum to its last ball",
+          "[IM:col2D][TM:NewtonThirdLawMot]") {
+  gp::Space space;
+  std::vector<gp::BodyId> balls;
+  // Touching elastic discs of radius 0.5 m; the first moves into the others at 2 m/s.
+  balls.push_back(space.add_body(disc("ball0", {-1.0, 0.0}, {2.0, 0.0}, 1.0)));
+  for (int i = 1; i < 5; ++i) {
+    balls.push_back(
+        space.add_body(disc("ball" + std::to_string(i), {i - 1.0, 0.0}, {0.0, 0.0}, 1.0)));
+  }
+  space.step(1.0 / 60);
+  // The sequential model of simultaneous impacts: each pair exchanges its velocities in turn.
+  for (int i = 0; i < 4; ++i) CHECK(space.state(balls[i]).velocity.norm() < 1e-12);
+  CHECK_THAT(space.state(balls[4]).velocity.x(), WithinAbs(2.0, 1e-12));
+  CHECK_THAT(space.state(balls[4]).position.x(), WithinAbs(3.0 + 2.0 / 60, 1e-12));
+}

@@ -10,6 +10,7 @@
 #include "gamephysics/models/dd/relative_velocity.hpp"
 #include "gamephysics/models/dd/torque.hpp"
 #include "gamephysics/models/gd/collision_impulse.hpp"
+#include "gamephysics/models/im/collision_response.hpp"
 #include "gamephysics/models/tm/newton_third_law.hpp"
 
 namespace gp {
@@ -147,6 +148,41 @@ void solve_contact(Contact& c, PairMotion& m) {
 }
 
 }  // namespace
+
+double apply_collision_response(const Contact& c, const ContactPointState& p, double restitution,
+                                const BodyInertia& inertia, MotionState& s) {
+  const im::CollidingBody body_a{inertia.inverse_mass[c.body_a], inertia.inverse_moment[c.body_a],
+                                 s.velocity[c.body_a], s.angular_velocity[c.body_a], p.arm_a};
+  const im::CollidingBody body_b{inertia.inverse_mass[c.body_b], inertia.inverse_moment[c.body_b],
+                                 s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b};
+  const auto r = im::collision_response(body_a, body_b, c.normal, restitution);
+  s.velocity[c.body_a] = r.velocity_a;
+  s.angular_velocity[c.body_a] = r.angular_velocity_a;
+  s.velocity[c.body_b] = r.velocity_b;
+  s.angular_velocity[c.body_b] = r.angular_velocity_b;
+  return r.impulse;
+}
+
+bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+                       const Settings& settings, int max_passes, MotionState& s) {
+  bool any = false;
+  for (bool struck = true; struck && max_passes-- > 0;) {
+    struck = false;
+    for (const Contact& c : contacts) {
+      if (c.restitution == 0.0) continue;
+      for (int k = 0; k < c.count; ++k) {
+        const ContactPointState& p = c.points[k];
+        if (p.depth <= -settings.linear_slop) continue;
+        if (contact_relative_velocity(s, c, p).dot(c.normal) >= -settings.restitution_threshold) {
+          continue;
+        }
+        apply_collision_response(c, p, c.restitution, inertia, s);
+        struck = any = true;
+      }
+    }
+  }
+  return any;
+}
 
 void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {

@@ -25,6 +25,20 @@ struct BodyInertia {
 /// [m/s] (DD:chaslesThm, DD:reVeInColl).
 Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
 
+/// IM:col2D at point `p` of `c` in state `s`: the impulse j n that gives the point's normal
+/// velocity −C_R times its value before, applied to both bodies' velocities; returns j [N·s].
+double apply_collision_response(const Contact& c, const ContactPointState& p, double restitution,
+                                const BodyInertia& inertia, MotionState& s);
+
+/// Impacts among bodies already touching, a Newton's cradle at rest struck at one end: resolved
+/// pair after pair by apply_collision_response with each contact's C_R, pass after pass, until
+/// no touching point with C_R > 0 approaches faster than the restitution threshold (at most
+/// `max_passes` passes). This is the sequential model of simultaneous impacts, under which the
+/// cradle passes the momentum along the row to its last ball, where a simultaneous solve spreads
+/// it over the row. Returns whether any impulse was applied.
+bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+                       const Settings& settings, int max_passes, MotionState& s);
+
 /// Prepares each point for a step of h [s]: its effective masses; its target normal velocity, the
 /// speed that just closes the gap for points still apart, else 0; and, for touching points
 /// approaching faster than the restitution threshold, that approach velocity v_n (measured in

@@ -17,7 +17,6 @@
 #include "gamephysics/models/dd/linear_acceleration.hpp"
 #include "gamephysics/models/dd/linear_displacement.hpp"
 #include "gamephysics/models/dd/linear_velocity.hpp"
-#include "gamephysics/models/im/collision_response.hpp"
 
 namespace gp {
 
@@ -149,17 +148,9 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
     const ContactPointState& p = c.points[0];
     const double restitution =
         approach(c, p) < -settings.restitution_threshold ? c.restitution : 0.0;
-    const im::CollidingBody body_a{inertia.inverse_mass[c.body_a], inertia.inverse_moment[c.body_a],
-                                   s.velocity[c.body_a], s.angular_velocity[c.body_a], p.arm_a};
-    const im::CollidingBody body_b{inertia.inverse_mass[c.body_b], inertia.inverse_moment[c.body_b],
-                                   s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b};
-    const auto r = im::collision_response(body_a, body_b, c.normal, restitution);
-    s.velocity[c.body_a] = r.velocity_a;
-    s.angular_velocity[c.body_a] = r.angular_velocity_a;
-    s.velocity[c.body_b] = r.velocity_b;
-    s.angular_velocity[c.body_b] = r.angular_velocity_b;
+    const double impulse = apply_collision_response(c, p, restitution, inertia, s);
     log.push_back(
-        {t, c.body_a, c.body_b, c.normal, c.points[0].arm_a + s.position[c.body_a], r.impulse});
+        {t, c.body_a, c.body_b, c.normal, c.points[0].arm_a + s.position[c.body_a], impulse});
     return;
   }
   // An impact takes no time: no gap to close, only the restitution targets.
