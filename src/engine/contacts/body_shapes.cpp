@@ -9,7 +9,7 @@ void BodyShapes::add(ShapeRecord record) {
   records_.push_back(std::move(record));
 }
 
-std::ranges::iota_view<std::uint32_t, std::uint32_t> BodyShapes::of_body(BodyId body) const {
+BodyShapes::Range BodyShapes::of_body(BodyId body) const {
   const auto end = static_cast<std::uint32_t>(size());
   const std::uint32_t first = body < first_.size() ? first_[body] : end;
   const std::uint32_t last = body + 1 < first_.size() ? first_[body + 1] : end;

@@ -2,7 +2,6 @@
 // Every shape of the space with its body and surface, and where each is in the world.
 
 #include <cstdint>
-#include <ranges>
 #include <vector>
 
 #include "engine/body.hpp"
@@ -28,8 +27,12 @@ class BodyShapes {
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
 
-  /// The indices of the shapes of `body`.
-  std::ranges::iota_view<std::uint32_t, std::uint32_t> of_body(BodyId body) const;
+  /// The indices [first, last) of the shapes of `body`.
+  struct Range {
+    std::uint32_t first;
+    std::uint32_t last;
+  };
+  Range of_body(BodyId body) const;
 
   /// Places every moving shape by its body's state (static shapes once, on the first call).
   void place(const MotionState& s, std::vector<WorldShape>& world) const;

@@ -170,7 +170,7 @@ bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, dou
   const double half_margin = 0.5 * settings_.contact_margin;
   // First every changed shape's new box, so that two changed shapes see each other's.
   for (BodyId b : changed) {
-    for (std::uint32_t i : shapes_.of_body(b)) {
+    for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
       end[i] = placed_at(i, h);
       const Aabb now = placed_at(i, tau).bounds;
       swept_[i] =
@@ -180,7 +180,7 @@ bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, dou
   }
   const ImpactFilter f = filter();
   for (BodyId b : changed) {
-    for (std::uint32_t i : shapes_.of_body(b)) {
+    for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
       const WorldShape here = placed_at(i, tau);
       for (std::uint32_t k = 0; k < shapes_.size(); ++k) {
         const BodyId other = shapes_[k].body;
