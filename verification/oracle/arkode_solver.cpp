@@ -18,7 +18,7 @@ ArkodeSolver::ArkodeSolver(const OracleOptions& options, OdeProblem& problem, do
   if (memory == nullptr) throw std::bad_alloc();
   memory_.reset(memory);
   check(ERKStepSetErrHandlerFn(memory, keep_error, this), "ERKStepSetErrHandlerFn");
-  check(ERKStepSetTableNum(memory, ARKODE_VERNER_8_5_6), "ERKStepSetTableNum");
+  check(ERKStepSetTableNum(memory, ARKODE_FEHLBERG_13_7_8), "ERKStepSetTableNum");
   check(ERKStepSetUserData(memory, &problem), "ERKStepSetUserData");
   check(ERKStepSStolerances(memory, options.rtol, options.atol), "ERKStepSStolerances");
   if (problem.root_count() > 0) {

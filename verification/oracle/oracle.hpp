@@ -21,7 +21,7 @@ namespace gp::verification {
 enum class OracleMethod {
   CvodeAdams,  ///< CVODE, variable-order (1–12) Adams–Moulton with functional iteration
   CvodeBdf,    ///< CVODE, variable-order (1–5) BDF with Newton iteration on a dense Jacobian
-  ArkodeErk,   ///< ARKODE ERKStep, explicit Verner 8(5)6 Runge–Kutta pair (order 6)
+  ArkodeErk,   ///< ARKODE ERKStep, explicit Fehlberg 13(7)8 Runge–Kutta pair (order 8)
 };
 
 /// "cvode-adams", "cvode-bdf", "arkode-erk".
