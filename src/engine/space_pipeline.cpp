@@ -45,8 +45,12 @@ std::vector<PipelineStage> Space::pipeline() const {
     stages.push_back({"narrowphase: contact manifolds",
                       "FR:Determine-Collisions A:collisionType LC:Expanded-Collisions",
                       "1 point (vertex to edge) or 2 points (edge to edge)"});
+    const bool local = forces_.constant() && integrator_->exact_for_constant_acceleration();
     stages.push_back({"time of impact", "IM:col2D GD:impulse",
-                      "isolated impacts resolved at t_c inside the step"});
+                      local ? "impacts resolved at t_c for their own bodies; impacts on resting "
+                              "bodies as speculative contacts"
+                            : "each impact ends a sub-step of the whole space (forces or "
+                              "integrator not exact along ballistic paths)"});
     stages.push_back({"contact solver: sequential impulses",
                       "FR:Determine-Collision-Response-Over-Time GD:impulse DD:reVeInColl "
                       "DD:chaslesThm DD:impulseV TM:NewtonThirdLawMot",
