@@ -88,14 +88,15 @@ void grazing(CheckList& list) {
   options.rtol = options.atol = 1e-12;
   const Trajectory oracle = run_oracle_trajectory(s, run.times, options);
   const Differences d = compare(run, oracle);
-  list.check("near-grazing impact, offset (1 − 1e-6) of the contact distance, restitution "
-             "threshold 0",
-             "FR:Determine-Collisions IM:col2D",
-             "impacts: engine " + std::to_string(run.impacts.size()) + ", oracle " +
-                 std::to_string(oracle.impacts.size()) + "; velocity error " + figure(d.velocity) +
-                 " m/s, t_c error " + figure(d.collision_time) + " s",
-             "one impact in both, velocities ≤ 1e-6 m/s",
-             run.impacts.size() == 1 && oracle.impacts.size() == 1 && d.velocity <= 1e-6);
+  list.check(
+      "near-grazing impact, offset (1 − 1e-6) of the contact distance, restitution "
+      "threshold 0",
+      "FR:Determine-Collisions IM:col2D",
+      "impacts: engine " + std::to_string(run.impacts.size()) + ", oracle " +
+          std::to_string(oracle.impacts.size()) + "; velocity error " + figure(d.velocity) +
+          " m/s, t_c error " + figure(d.collision_time) + " s",
+      "one impact in both, velocities ≤ 1e-6 m/s",
+      run.impacts.size() == 1 && oracle.impacts.size() == 1 && d.velocity <= 1e-6);
 }
 
 // Five equal balls in a row, `gap` [m] apart; the first arrives at 2 m/s. Pairwise elastic
@@ -172,7 +173,11 @@ void stack(CheckList& list, bool quick) {
   }
   list.check("10-box stack, mass ratio 1:100, heavy on top, " + figure(duration) + " s",
              "FR:Determine-Collision-Response-Over-Time",
-             "largest displacement " + figure(worst) + " m", "≤ 0.01 m", worst <= 0.01);
+             "largest displacement " + figure(worst) +
+                 " m (known failure: the default 10 sequential-impulse passes do not carry a "
+                 "1:100 load down the column, which leans and topples; 40 passes leave the top box "
+                 "within 3 cm)",
+             "≤ 0.01 m", worst <= 0.01);
 }
 
 void resting(CheckList& list, bool quick) {
