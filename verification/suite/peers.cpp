@@ -5,29 +5,13 @@
 #include <sstream>
 
 #include "engine/output/output_times.hpp"
-#include "verification/peers/peer_run.hpp"
-#include "verification/peers/peer_scene.hpp"
-#include "verification/peers/peer_world.hpp"
 #include "verification/suite/oracle_trajectory.hpp"
+#include "verification/suite/peer_trajectory.hpp"
 #include "verification/suite/suite.hpp"
 
 namespace gp::verification {
 
 namespace {
-
-Trajectory run_peer_trajectory(peers::PeerEngine engine, const Scene& scene) {
-  Scene stepped = scene;
-  stepped.output_dt = scene.dt;
-  const auto world = peers::make_peer(engine, peers::peer_scene(stepped));
-  Trajectory run;
-  peers::run_peer(*world, stepped, [&](double t) {
-    run.times.push_back(t);
-    std::vector<BodyState> states;
-    for (BodyId id = 0; id < world->body_count(); ++id) states.push_back(world->state(id));
-    run.states.push_back(std::move(states));
-  });
-  return run;
-}
 
 std::string describe(const Differences& d) {
   return "position " + figure(d.position) + " m, orientation " + figure(d.orientation) +

@@ -11,11 +11,11 @@
 
 namespace gp::verification {
 
-namespace {
-
 double cpu_now() {
   return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
+
+namespace {
 
 // |a − b| for two orientations, the shorter way round [rad].
 double angle_difference(double a, double b) {
@@ -44,22 +44,28 @@ Trajectory run_engine(const Scene& scene, IntegratorKind integrator, double dt) 
   return run;
 }
 
+double median_cpu_seconds(const std::function<double()>& timed_run) {
+  std::vector<double> samples;
+  double total = 0.0;
+  while (samples.size() < 3 || total < 0.1) {
+    samples.push_back(timed_run());
+    total += samples.back();
+  }
+  std::nth_element(samples.begin(), samples.begin() + samples.size() / 2, samples.end());
+  return samples[samples.size() / 2];
+}
+
 double time_engine(const Scene& scene, IntegratorKind integrator, double dt) {
   Scene stepped = scene;
   stepped.settings.integrator = integrator;
   stepped.dt = dt;
   stepped.output_dt = std::max(scene.duration, dt);
-  std::vector<double> samples;
-  double total = 0.0;
-  while (samples.size() < 3 || total < 0.1) {
+  return median_cpu_seconds([&stepped] {
     const auto space = build_space(stepped);
     const double start = cpu_now();
     run_scene(*space, stepped, [](double) {});
-    samples.push_back(cpu_now() - start);
-    total += samples.back();
-  }
-  std::nth_element(samples.begin(), samples.begin() + samples.size() / 2, samples.end());
-  return samples[samples.size() / 2];
+    return cpu_now() - start;
+  });
 }
 
 Trajectory sample_at(const Trajectory& run, const std::vector<double>& instants) {

@@ -2,6 +2,7 @@
 // A run of a scene as the verification suite compares it: every body's state at common instants,
 // the impacts, and what the run cost.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,13 @@ Trajectory run_engine(const Scene& scene, IntegratorKind integrator, double dt);
 /// CPU seconds the engine takes to run the scene with `integrator` and step `dt` [s], without
 /// recording anything: the median of repeated runs, repeated for at least 0.1 s in all.
 double time_engine(const Scene& scene, IntegratorKind integrator, double dt);
+
+/// CPU time of this process [s].
+double cpu_now();
+
+/// The median of the CPU seconds that repeated calls of `timed_run` return (each times what it
+/// runs, leaving out its set-up), over at least 3 calls and 0.1 s in all.
+double median_cpu_seconds(const std::function<double()>& timed_run);
 
 /// The states of `run` at `instants` [s] (each a step end of the run, within 1e-9 s).
 Trajectory sample_at(const Trajectory& run, const std::vector<double>& instants);

@@ -1,11 +1,13 @@
 // Speed against error: CPU time per simulated second against the largest position error versus
-// the oracle, for every game integrator at six step sizes and for CVODE at six tolerances.
+// the oracle, for every game integrator and for Chipmunk2D and Box2D at six step sizes, and for
+// CVODE at six tolerances.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "engine/output/output_times.hpp"
 #include "verification/suite/oracle_trajectory.hpp"
+#include "verification/suite/peer_trajectory.hpp"
 #include "verification/suite/scene_builders.hpp"
 #include "verification/suite/suite.hpp"
 
@@ -52,6 +54,18 @@ std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
         const Differences d = compare(sample_at(run, instants), reference);
         csv << name << "," << integrator_name(kind) << "," << dt << ","
             << time_engine(stepped, kind, dt) / simulated << "," << d.position << "\n";
+        ++points;
+      }
+    }
+    // The peers at the same step sizes: Chipmunk2D and Box2D as points on the same diagram.
+    for (const auto engine : {peers::PeerEngine::Chipmunk, peers::PeerEngine::Box2d}) {
+      for (int k = 0; k < (o.quick ? 2 : 6); ++k) {
+        Scene stepped = scene;
+        stepped.dt = kCoarsest / (1 << k);
+        const Differences d =
+            compare(sample_at(run_peer_trajectory(engine, stepped), instants), reference);
+        csv << name << "," << peers::engine_name(engine) << "," << stepped.dt << ","
+            << time_peer(engine, stepped) / simulated << "," << d.position << "\n";
         ++points;
       }
     }
