@@ -133,15 +133,25 @@ const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
   return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
 }
 
-bool Space::local_step(double h) {
-  start_ = state_;
+Ballistic Space::start_motion() {
   start_acceleration_.resize(state_.position.size());
   forces_.evaluate(time_, start_, start_acceleration_);
-  const Ballistic motion{start_, start_acceleration_};
+  return {start_, start_acceleration_};
+}
+
+double Space::warm_start_scale(double h) const {
+  // Resting impulses grow with the step, so they carry over scaled by h / h_prev; never scaled
+  // up, because after a short sub-step (an impact) they hold what stopped the impact, which
+  // does not grow with the step.
+  return previous_h_ > 0.0 ? std::min(1.0, h / previous_h_) : 0.0;
+}
+
+bool Space::local_step(double h) {
+  start_ = state_;
+  const Ballistic motion = start_motion();
   const std::vector<ProxyPair>& pairs = sweep(h, motion);
-  const double scale = previous_h_ > 0.0 ? std::min(1.0, h / previous_h_) : 0.0;
-  detection_.find_contacts(pairs, shapes_, world_start_, start_, previous_contacts_, scale,
-                           contacts_);
+  detection_.find_contacts(pairs, shapes_, world_start_, start_, previous_contacts_,
+                           warm_start_scale(h), contacts_);
   local_impacts_.classify(pairs, world_start_, world_end_, motion, h,
                           impacts_this_step_ < settings_.max_impacts_per_step, contacts_);
   local_impacts_.hand_over(world_start_, start_, h, contacts_, speculative_contacts_);
@@ -158,15 +168,12 @@ double Space::substep(double h) {
   start_ = state_;
   const std::vector<ProxyPair>* impact_pairs = nullptr;
   if (collides_) {
-    start_acceleration_.resize(state_.position.size());
-    forces_.evaluate(time_, start_, start_acceleration_);
-    const Ballistic motion{start_, start_acceleration_};
+    const Ballistic motion = start_motion();
     const auto& pairs = sweep(h, motion);
     contact_pairs_.assign(pairs.begin(), pairs.end());
     if (impacts_this_step_ < settings_.max_impacts_per_step) {
-      const auto tau = impact_search_.earliest(
-          contact_pairs_, shapes_, world_start_, world_end_, motion, h,
-          {settings_.linear_slop, settings_.restitution_threshold, settings_.contact_margin});
+      const auto tau = impact_search_.earliest(contact_pairs_, shapes_, world_start_, world_end_,
+                                               motion, h, impact_filter(settings_));
       if (tau && *tau < h) {
         h = *tau;
         impact_pairs = &impact_search_.touching();
@@ -177,12 +184,8 @@ double Space::substep(double h) {
         });
       }
     }
-    // Resting impulses grow with the step, so they carry over scaled by h / h_prev; never scaled
-    // up, because after a short sub-step (an impact) they hold what stopped the impact, which
-    // does not grow with the step.
-    const double scale = previous_h_ > 0.0 ? std::min(1.0, h / previous_h_) : 0.0;
     detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, previous_contacts_,
-                             scale, contacts_);
+                             warm_start_scale(h), contacts_);
   }
   advance(h);
   if (impact_pairs) {
@@ -194,10 +197,8 @@ double Space::substep(double h) {
 }
 
 void Space::advance(double h) {
-  // Impacts among touching bodies happen at the start of the step, before its forces; the
-  // solver's passes bound their passes too.
-  if (!contacts_.empty() &&
-      propagate_impacts(contacts_, inertia_, settings_, settings_.velocity_iterations, state_)) {
+  // Impacts among touching bodies happen at the start of the step, before its forces.
+  if (!contacts_.empty() && propagate_impacts(contacts_, inertia_, settings_, state_)) {
     start_.velocity = state_.velocity;
     start_.angular_velocity = state_.angular_velocity;
   }

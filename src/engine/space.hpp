@@ -73,6 +73,10 @@ class Space {
   /// Advances by h in one piece, resolving impacts for their own bodies only (LocalImpacts);
   /// false, having changed nothing, when the step must be sub-stepped instead.
   bool local_step(double h);
+  /// The ballistic motion from start_ under the accelerations at the start of the step.
+  Ballistic start_motion();
+  /// The factor the previous step's impulses carry over with into a step of h [s].
+  double warm_start_scale(double h) const;
   /// Places the shapes at the start of a step of h and at the end of their ballistic paths, and
   /// returns the candidate pairs of the boxes swept between.
   const std::vector<ProxyPair>& sweep(double h, const Ballistic& motion);

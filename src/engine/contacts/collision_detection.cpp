@@ -28,9 +28,7 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
     const std::vector<WorldShape>& start, const std::vector<WorldShape>& end) {
   proxies_.resize(shapes.size());
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
-    const Aabb& a = start[i].bounds;
-    const Aabb& b = end[i].bounds;
-    proxies_[i] = {i, Aabb{a.min.cwiseMin(b.min), a.max.cwiseMax(b.max)}, !dynamic[shapes[i].body]};
+    proxies_[i] = {i, start[i].bounds.united(end[i].bounds), !dynamic[shapes[i].body]};
   }
   const auto& found = broadphase_.find_pairs(proxies_);
   pairs_.clear();

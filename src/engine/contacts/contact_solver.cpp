@@ -30,6 +30,19 @@ double effective_mass(const BodyInertia& m, const Contact& c, const Vec2& arm_a,
                                m.inverse_moment[c.body_b], arm_a, arm_b);
 }
 
+// Moves and turns A by the positional impulse `shift` [kg·m] at its arm and B by the reaction
+// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot applied to displacements instead of velocities).
+void displace(const BodyInertia& m, const Contact& c, const Vec2& arm_a, const Vec2& arm_b,
+              const Vec2& shift, MotionState& s) {
+  const Vec2 back = tm::reaction_force(shift);
+  s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
+  s.angle[c.body_a] = dd::rotated_orientation(
+      s.angle[c.body_a], dd::torque(arm_a, shift) * m.inverse_moment[c.body_a]);
+  s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
+  s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b],
+                                              dd::torque(arm_b, back) * m.inverse_moment[c.body_b]);
+}
+
 // DD:chaslesThm, DD:reVeInColl: velocity of A's material point at p relative to B's [m/s].
 Vec2 point_relative_velocity(const Vec2& velocity_a, double angular_velocity_a,
                              const Vec2& velocity_b, double angular_velocity_b,
@@ -164,9 +177,10 @@ double apply_collision_response(const Contact& c, const ContactPointState& p, do
 }
 
 bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& inertia,
-                       const Settings& settings, int max_passes, MotionState& s) {
+                       const Settings& settings, MotionState& s) {
   bool any = false;
-  for (bool struck = true; struck && max_passes-- > 0;) {
+  int passes = settings.velocity_iterations;
+  for (bool struck = true; struck && passes-- > 0;) {
     struck = false;
     for (const Contact& c : contacts) {
       if (c.restitution == 0.0) continue;
@@ -254,17 +268,7 @@ void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyIn
     for (int k = 0; k < c.count; ++k) {
       const ContactPointState& p = c.points[k];
       const Vec2 impulse = p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal);
-      const Vec2 reaction = tm::reaction_force(impulse);
-      s.position[c.body_a] +=
-          duration * dd::velocity_change_from_impulse(impulse, inertia.inverse_mass[c.body_a]);
-      s.angle[c.body_a] =
-          dd::rotated_orientation(s.angle[c.body_a], duration * dd::torque(p.arm_a, impulse) *
-                                                         inertia.inverse_moment[c.body_a]);
-      s.position[c.body_b] +=
-          duration * dd::velocity_change_from_impulse(reaction, inertia.inverse_mass[c.body_b]);
-      s.angle[c.body_b] =
-          dd::rotated_orientation(s.angle[c.body_b], duration * dd::torque(p.arm_b, reaction) *
-                                                         inertia.inverse_moment[c.body_b]);
+      displace(inertia, c, p.arm_a, p.arm_b, duration * impulse, s);
     }
   }
 }
@@ -339,16 +343,8 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
         if (excess == 0.0) continue;
         moved = true;
         // The same effective mass as for impulses, applied to a displacement instead of a velocity.
-        const Vec2 shift = -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal;
-        s.position[c.body_a] +=
-            dd::velocity_change_from_impulse(shift, inertia.inverse_mass[c.body_a]);
-        s.angle[c.body_a] = dd::rotated_orientation(
-            s.angle[c.body_a], dd::torque(arm_a, shift) * inertia.inverse_moment[c.body_a]);
-        const Vec2 back = tm::reaction_force(shift);
-        s.position[c.body_b] +=
-            dd::velocity_change_from_impulse(back, inertia.inverse_mass[c.body_b]);
-        s.angle[c.body_b] = dd::rotated_orientation(
-            s.angle[c.body_b], dd::torque(arm_b, back) * inertia.inverse_moment[c.body_b]);
+        displace(inertia, c, arm_a, arm_b,
+                 -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal, s);
       }
     }
   }

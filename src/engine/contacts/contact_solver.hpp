@@ -32,12 +32,12 @@ double apply_collision_response(const Contact& c, const ContactPointState& p, do
 
 /// Impacts among bodies already touching, a Newton's cradle at rest struck at one end: resolved
 /// pair after pair by apply_collision_response with each contact's C_R, pass after pass, until
-/// no touching point with C_R > 0 approaches faster than the restitution threshold (at most
-/// `max_passes` passes). This is the sequential model of simultaneous impacts, under which the
-/// cradle passes the momentum along the row to its last ball, where a simultaneous solve spreads
-/// it over the row. Returns whether any impulse was applied.
+/// no touching point with C_R > 0 approaches faster than the restitution threshold (at most as
+/// many passes as the solver's velocity iterations). This is the sequential model of simultaneous
+/// impacts, under which the cradle passes the momentum along the row to its last ball, where a
+/// simultaneous solve spreads it over the row. Returns whether any impulse was applied.
 bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& inertia,
-                       const Settings& settings, int max_passes, MotionState& s);
+                       const Settings& settings, MotionState& s);
 
 /// Prepares each point for a step of h [s]: its effective masses; its target normal velocity, the
 /// speed that just closes the gap for points still apart, else 0; and, for touching points

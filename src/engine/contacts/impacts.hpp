@@ -49,6 +49,11 @@ struct ImpactFilter {
   double margin;     ///< m: the contact solver's speculative margin
 };
 
+/// The filter of a space's settings: its slop, restitution threshold and contact margin.
+inline ImpactFilter impact_filter(const Settings& settings) {
+  return {settings.linear_slop, settings.restitution_threshold, settings.contact_margin};
+}
+
 /// The earliest τ in (t0, h] at which shapes `a` and `b`, apart at τ = t0 (signed distance >
 /// `filter.slop`), touch while following `motion`; nothing if they do not. Pairs closer than
 /// `filter.margin` that close slower than `filter.min_speed` over the rest of the step are left

@@ -9,17 +9,13 @@
 
 namespace gp {
 
-ImpactFilter LocalImpacts::filter() const {
-  return {settings_.linear_slop, settings_.restitution_threshold, settings_.contact_margin};
-}
-
 void LocalImpacts::classify(const std::vector<ProxyPair>& pairs,
                             const std::vector<WorldShape>& start,
                             const std::vector<WorldShape>& end, const Ballistic& motion, double h,
                             bool search, std::vector<Contact>& contacts) {
   pending_.clear();
   if (!search) return;
-  const ImpactFilter f = filter();
+  const ImpactFilter f = impact_filter(settings_);
   // Both lists are sorted by pair: one forward scan finds each pair's contact.
   auto contact = contacts.begin();
   for (const ProxyPair& p : pairs) {
@@ -118,9 +114,7 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
   const double half_margin = 0.5 * settings_.contact_margin;
   swept_.resize(shapes_.size());
   for (std::size_t i = 0; i < shapes_.size(); ++i) {
-    swept_[i] = Aabb{world_start[i].bounds.min.cwiseMin(end[i].bounds.min),
-                     world_start[i].bounds.max.cwiseMax(end[i].bounds.max)}
-                    .fattened(half_margin);
+    swept_[i] = world_start[i].bounds.united(end[i].bounds).fattened(half_margin);
   }
   at_impact_.resize(start.position.size());
   is_changed_.assign(start.position.size(), 0);
@@ -169,19 +163,18 @@ bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, dou
   };
   const double half_margin = 0.5 * settings_.contact_margin;
   // First every changed shape's new box, so that two changed shapes see each other's.
+  here_.clear();
   for (BodyId b : changed) {
     for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
       end[i] = placed_at(i, h);
-      const Aabb now = placed_at(i, tau).bounds;
-      swept_[i] =
-          Aabb{now.min.cwiseMin(end[i].bounds.min), now.max.cwiseMax(end[i].bounds.max)}.fattened(
-              half_margin);
+      here_.push_back(placed_at(i, tau));
+      swept_[i] = here_.back().bounds.united(end[i].bounds).fattened(half_margin);
     }
   }
-  const ImpactFilter f = filter();
+  const ImpactFilter f = impact_filter(settings_);
+  auto here = here_.begin();
   for (BodyId b : changed) {
-    for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
-      const WorldShape here = placed_at(i, tau);
+    for (auto [i, last] = shapes_.of_body(b); i < last; ++i, ++here) {
       for (std::uint32_t k = 0; k < shapes_.size(); ++k) {
         const BodyId other = shapes_[k].body;
         if (other == b || !swept_[i].overlaps(swept_[k])) continue;
@@ -198,7 +191,7 @@ bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, dou
           }
           continue;
         }
-        const auto when = impact_time(shapes_[i], shapes_[k], here, placed_at(k, tau), end[i],
+        const auto when = impact_time(shapes_[i], shapes_[k], *here, placed_at(k, tau), end[i],
                                       end[k], motion, tau, h, f);
         if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
       }

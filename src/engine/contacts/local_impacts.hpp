@@ -56,7 +56,6 @@ class LocalImpacts {
     double time;  ///< τ [s] from the start of the step
   };
 
-  ImpactFilter filter() const;
   /// Whether a point of `c` overlaps or is within the slop.
   bool touching(const Contact& c) const;
   /// Whether contact `c` can push during a step of h [s] from state `s`: a point touching, or
@@ -81,6 +80,7 @@ class LocalImpacts {
   // Scratch kept between steps so that impacts allocate nothing once the scene is warmed up.
   std::vector<ProxyPair> group_;
   std::vector<BodyId> changed_;
+  std::vector<WorldShape> here_;  // the changed shapes placed at the impact, in search order
   std::vector<char> is_changed_;
   std::vector<Contact> impact_contacts_;
   MotionState at_impact_;

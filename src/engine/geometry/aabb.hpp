@@ -15,6 +15,11 @@ struct Aabb {
            other.min.y() <= max.y();
   }
 
+  /// The smallest box holding this one and `other`.
+  Aabb united(const Aabb& other) const {
+    return {min.cwiseMin(other.min), max.cwiseMax(other.max)};
+  }
+
   /// This box grown by `margin` (m) on every side.
   Aabb fattened(double margin) const {
     const Vec2 grow(margin, margin);
