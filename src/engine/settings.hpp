@@ -23,8 +23,12 @@ struct Settings {
   /// Velocity Verlet by default: second order, symplectic, one force evaluation per step, and
   /// exact under constant acceleration (free flight under gravity and constant forces).
   IntegratorKind integrator = IntegratorKind::VelocityVerlet;
-  int velocity_iterations = 10;  ///< sequential-impulse passes over the contacts per step
-  int position_iterations = 4;   ///< penetration-removal passes per step
+  int velocity_iterations = 10;  ///< sequential-impulse passes over the contacts per step, at most
+  /// m/s: the sequential-impulse passes of a step end early once a whole pass changes no body's
+  /// velocity by more than this; a resting stack, warm-started with last step's impulses, then
+  /// needs a pass or two instead of all of them.
+  double velocity_tolerance = 1e-5;
+  int position_iterations = 4;  ///< penetration-removal passes per step
   /// Impacts slower than this [m/s] are treated as resting contact (no bounce), which ends the
   /// infinite sequence of ever smaller bounces (a Zeno sequence) of an inelastic ball.
   double restitution_threshold = 0.05;

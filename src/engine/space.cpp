@@ -207,7 +207,8 @@ void Space::advance(double h) {
   if (!contacts_.empty()) {
     prepare_contacts(contacts_, inertia_, start_, h, settings_);
     warm_start(contacts_, inertia_, state_);
-    solve_velocities(contacts_, inertia_, settings_.velocity_iterations, state_);
+    solve_velocities(contacts_, inertia_, settings_.velocity_iterations,
+                     settings_.velocity_tolerance, state_);
     apply_restitution(contacts_, inertia_, state_);
     move_by_contact_impulses(contacts_, inertia_, integrator_->impulse_position_share() * h,
                              state_);

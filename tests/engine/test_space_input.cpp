@@ -110,6 +110,18 @@ TEST_CASE("Settings and steps are checked too", "[FR:Verify-Physical_Constraints
   settings = {};
   settings.position_iterations = -2;
   CHECK_THROWS_AS(gp::Space(settings), gp::InputError);
+  settings = {};
+  settings.velocity_tolerance = std::nan("");
+  CHECK_THROWS_WITH(gp::Space(settings), "velocity_tolerance: must be a finite number, got nan");
+  settings = {};
+  settings.linear_slop = -1e-3;
+  CHECK_THROWS_WITH(gp::Space(settings), "linear_slop: must be >= 0, got -0.001");
+  settings = {};
+  settings.contact_margin = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(gp::Space(settings), gp::InputError);
+  settings = {};
+  settings.max_impacts_per_step = -1;
+  CHECK_THROWS_WITH(gp::Space(settings), "max_impacts_per_step: must be >= 0, got -1");
   gp::Space space;
   CHECK_THROWS_WITH(space.step(0.0), "dt: must be > 0 (a time step), got 0");
   CHECK_THROWS_AS(space.step(std::nan("")), gp::InputError);
@@ -128,8 +140,8 @@ TEST_CASE("A non-finite state stops the run with the body's name and the time",
   } catch (const gp::NumericalError& e) {
     CHECK(e.body() == "ball");
     // Velocity Verlet evaluates the force at both ends of a step: first NaN at the end of
-  // [0.05, 0.06].
-  CHECK_THAT(e.time(), Catch::Matchers::WithinAbs(0.06, 1e-12));
+    // [0.05, 0.06].
+    CHECK_THAT(e.time(), Catch::Matchers::WithinAbs(0.06, 1e-12));
     CHECK_THAT(e.what(), Catch::Contains("body 'ball' has a non-finite state"));
   }
 }

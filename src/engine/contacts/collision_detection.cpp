@@ -56,7 +56,8 @@ Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const Cont
             m.count,
             {},
             std::max(a.restitution, b.restitution),
-            std::sqrt(a.friction * b.friction)};
+            std::sqrt(a.friction * b.friction),
+            {}};
   // A disc's anchor needs no frame: spare its trigonometry.
   const auto frame_of = [&s](const ShapeRecord& r) {
     return r.local.kind() == ShapeKind::kCircle ? Transform()

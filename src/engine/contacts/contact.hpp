@@ -38,6 +38,17 @@ struct ContactPointState {
   double tangent_mass = 0.0;  ///< kg: the same along the tangent
 };
 
+/// The effective-mass matrix K of a two-point contact's normal constraints [1/kg]: entry (i, j)
+/// is the change of v_rel·n at point i per unit normal impulse at point j, the diagonal being
+/// GD:impulse's denominators; and its inverse [kg].
+struct NormalBlock {
+  double k11 = 0.0, k12 = 0.0, k22 = 0.0;
+  double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;
+  /// False when the two points are nearly redundant (ill-conditioned K): the solver then takes
+  /// them one by one.
+  bool solvable = false;
+};
+
 struct Contact {
   std::uint32_t shape_a;
   std::uint32_t shape_b;
@@ -48,9 +59,9 @@ struct Contact {
   std::array<ContactPointState, 2> points;
   double restitution;  ///< C_R = max of the two shapes'
   double friction;     ///< μ = √(μ_a μ_b)
-  /// 1/kg: change of v_rel·n at one point per unit normal impulse at the other (two points only);
-  /// the diagonal terms are 1 / normal_mass.
-  double coupling = 0.0;
+  /// Both normal constraints of a two-point contact as one (the block solver's), set up once per
+  /// step so that the solver's passes divide nothing.
+  NormalBlock block;
 
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
   std::uint64_t key() const { return key_of({shape_a, shape_b}); }

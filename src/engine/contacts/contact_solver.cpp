@@ -30,17 +30,24 @@ double effective_mass(const BodyInertia& m, const Contact& c, const Vec2& arm_a,
                                m.inverse_moment[c.body_b], arm_a, arm_b);
 }
 
+// The angles [rad] by which displace() turned A and B.
+struct Turns {
+  double a;
+  double b;
+};
+
 // Moves and turns A by the positional impulse `shift` [kg·m] at its arm and B by the reaction
 // (DD:impulseV, DD:torque, TM:NewtonThirdLawMot applied to displacements instead of velocities).
-void displace(const BodyInertia& m, const Contact& c, const Vec2& arm_a, const Vec2& arm_b,
-              const Vec2& shift, MotionState& s) {
+Turns displace(const BodyInertia& m, const Contact& c, const Vec2& arm_a, const Vec2& arm_b,
+               const Vec2& shift, MotionState& s) {
   const Vec2 back = tm::reaction_force(shift);
+  const Turns turns{dd::torque(arm_a, shift) * m.inverse_moment[c.body_a],
+                    dd::torque(arm_b, back) * m.inverse_moment[c.body_b]};
   s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
-  s.angle[c.body_a] = dd::rotated_orientation(
-      s.angle[c.body_a], dd::torque(arm_a, shift) * m.inverse_moment[c.body_a]);
+  s.angle[c.body_a] = dd::rotated_orientation(s.angle[c.body_a], turns.a);
   s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
-  s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b],
-                                              dd::torque(arm_b, back) * m.inverse_moment[c.body_b]);
+  s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b], turns.b);
+  return turns;
 }
 
 // DD:chaslesThm, DD:reVeInColl: velocity of A's material point at p relative to B's [m/s].
@@ -109,22 +116,21 @@ namespace {
 // after the other leaves a residual that turns a tall stack. Returns false, leaving the points to
 // the one-by-one solver, when the two points are nearly redundant (ill-conditioned matrix).
 bool solve_pair(Contact& c, PairMotion& m) {
+  const NormalBlock& k = c.block;
+  if (!k.solvable) return false;
   ContactPointState& p = c.points[0];
   ContactPointState& q = c.points[1];
-  const double k11 = 1.0 / p.normal_mass, k22 = 1.0 / q.normal_mass, k12 = c.coupling;
-  const double determinant = k11 * k22 - k12 * k12;
-  if (k11 * k11 >= 1000.0 * determinant) return false;
   const Vec2 old{p.normal_impulse, q.normal_impulse};
   // Velocities the constraints must reach, less what the impulses already applied give.
   const Vec2 b{
-      m.normal_velocity(c, p) - p.target_normal_velocity - (k11 * old.x() + k12 * old.y()),
-      m.normal_velocity(c, q) - q.target_normal_velocity - (k12 * old.x() + k22 * old.y())};
+      m.normal_velocity(c, p) - p.target_normal_velocity - (k.k11 * old.x() + k.k12 * old.y()),
+      m.normal_velocity(c, q) - q.target_normal_velocity - (k.k12 * old.x() + k.k22 * old.y())};
   Vec2 x;
-  if (x = Vec2{(-k22 * b.x() + k12 * b.y()) / determinant,
-               (k12 * b.x() - k11 * b.y()) / determinant};
+  if (x = Vec2{-(k.inverse11 * b.x() + k.inverse12 * b.y()),
+               -(k.inverse12 * b.x() + k.inverse22 * b.y())};
       x.x() >= 0.0 && x.y() >= 0.0) {
-  } else if (x = Vec2{-b.x() / k11, 0.0}; x.x() >= 0.0 && k12 * x.x() + b.y() >= 0.0) {
-  } else if (x = Vec2{0.0, -b.y() / k22}; x.y() >= 0.0 && k12 * x.y() + b.x() >= 0.0) {
+  } else if (x = Vec2{-b.x() * p.normal_mass, 0.0}; x.x() >= 0.0 && k.k12 * x.x() + b.y() >= 0.0) {
+  } else if (x = Vec2{0.0, -b.y() * q.normal_mass}; x.y() >= 0.0 && k.k12 * x.y() + b.x() >= 0.0) {
   } else if (x = Vec2::Zero(); b.x() >= 0.0 && b.y() >= 0.0) {
   } else {
     return false;
@@ -137,7 +143,9 @@ bool solve_pair(Contact& c, PairMotion& m) {
 }
 
 // One pass of sequential impulses over the points of `c`: friction, then the normal constraints.
-void solve_contact(Contact& c, PairMotion& m) {
+// Returns the largest change of an accumulated impulse in the pass [N·s].
+double solve_contact(Contact& c, PairMotion& m) {
+  double largest_change = 0.0;
   if (c.friction > 0.0) {
     // Friction first, so the normal constraints, solved last, are the ones met exactly.
     const Vec2 tangent = tangent_of(c.normal);
@@ -146,18 +154,27 @@ void solve_contact(Contact& c, PairMotion& m) {
       const double limit = c.friction * p.normal_impulse;
       const double change = -p.tangent_mass * m.relative_velocity(p).dot(tangent);
       const double total = std::clamp(p.tangent_impulse + change, -limit, limit);
+      largest_change = std::max(largest_change, std::abs(total - p.tangent_impulse));
       m.apply(p, (total - p.tangent_impulse) * tangent);
       p.tangent_impulse = total;
     }
   }
-  if (c.count == 2 && solve_pair(c, m)) return;
+  if (c.count == 2) {
+    const Vec2 old{c.points[0].normal_impulse, c.points[1].normal_impulse};
+    if (solve_pair(c, m)) {
+      return std::max({largest_change, std::abs(c.points[0].normal_impulse - old.x()),
+                       std::abs(c.points[1].normal_impulse - old.y())});
+    }
+  }
   for (int k = 0; k < c.count; ++k) {
     ContactPointState& p = c.points[k];
     const double change = p.normal_mass * (p.target_normal_velocity - m.normal_velocity(c, p));
     const double total = std::max(p.normal_impulse + change, 0.0);
+    largest_change = std::max(largest_change, std::abs(total - p.normal_impulse));
     m.apply(p, (total - p.normal_impulse) * c.normal);
     p.normal_impulse = total;
   }
+  return largest_change;
 }
 
 }  // namespace
@@ -198,21 +215,38 @@ bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& 
   return any;
 }
 
+namespace {
+
+NormalBlock normal_block(const BodyInertia& inertia, const Contact& c) {
+  const ContactPointState& p = c.points[0];
+  const ContactPointState& q = c.points[1];
+  NormalBlock k;
+  k.k11 = 1.0 / p.normal_mass;
+  k.k22 = 1.0 / q.normal_mass;
+  // The off-diagonal term: arms of point 0 against arms of point 1.
+  k.k12 = inertia.inverse_mass[c.body_a] + inertia.inverse_mass[c.body_b] +
+          inertia.inverse_moment[c.body_a] * cross(p.arm_a, c.normal) * cross(q.arm_a, c.normal) +
+          inertia.inverse_moment[c.body_b] * cross(p.arm_b, c.normal) * cross(q.arm_b, c.normal);
+  const double determinant = k.k11 * k.k22 - k.k12 * k.k12;
+  // Box2D's bound on K's condition number, past which the block solve amplifies round-off.
+  k.solvable = k.k11 * k.k11 < 1000.0 * determinant;
+  if (k.solvable) {
+    k.inverse11 = k.k22 / determinant;
+    k.inverse12 = -k.k12 / determinant;
+    k.inverse22 = k.k11 / determinant;
+  }
+  return k;
+}
+
+}  // namespace
+
 void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
   for (Contact& c : contacts) {
     for (int k = 0; k < c.count; ++k) {
       ContactPointState& p = c.points[k];
       p.normal_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, c.normal);
-      if (k == 1) {
-        // The off-diagonal term of the two points' effective-mass matrix, whose diagonal is
-        // GD:impulse's denominator: arms of point 0 against arms of point 1.
-        const ContactPointState& q = c.points[0];
-        c.coupling =
-            inertia.inverse_mass[c.body_a] + inertia.inverse_mass[c.body_b] +
-            inertia.inverse_moment[c.body_a] * cross(q.arm_a, c.normal) * cross(p.arm_a, c.normal) +
-            inertia.inverse_moment[c.body_b] * cross(q.arm_b, c.normal) * cross(p.arm_b, c.normal);
-      }
+      if (k == 1) c.block = normal_block(inertia, c);
       p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent_of(c.normal));
       const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
@@ -234,15 +268,22 @@ void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia
   }
 }
 
-void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
-                      MotionState& s) {
-  for (int i = 0; i < iterations; ++i) {
+int solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
+                     double tolerance, MotionState& s) {
+  for (int i = 0; i < iterations;) {
+    double largest_change = 0.0;
     for (Contact& c : contacts) {
       PairMotion m(c, inertia, s);
-      solve_contact(c, m);
+      largest_change =
+          std::max(largest_change, solve_contact(c, m) * (m.inverse_mass_a + m.inverse_mass_b));
       m.store(c, s);
     }
+    ++i;
+    // A pass that changed the velocities by at most the tolerance leaves the next about as
+    // little to do (none at all when it changed nothing).
+    if (largest_change <= tolerance) return i;
   }
+  return iterations;
 }
 
 void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s) {
@@ -307,8 +348,8 @@ void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& spec
   move_by_contact_impulses(scratch.subset, inertia, -h, s);
   prepare_contacts(speculative, inertia, before, h, settings);
   for (int i = 0; i < settings.velocity_iterations; ++i) {
-    solve_velocities(scratch.subset, inertia, 1, s);
-    solve_velocities(speculative, inertia, 1, s);
+    solve_velocities(scratch.subset, inertia, 1, 0.0, s);
+    solve_velocities(speculative, inertia, 1, 0.0, s);
   }
   apply_restitution(speculative, inertia, s);
   move_by_contact_impulses(scratch.subset, inertia, h, s);
@@ -320,6 +361,18 @@ void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& spec
 void RotationCache::reset(std::size_t bodies) {
   angle_.assign(bodies, std::numeric_limits<double>::quiet_NaN());
   rotation_.resize(bodies);
+}
+
+void RotationCache::turn(BodyId body, double angle, double turn) {
+  // Beyond this, the series of Transform::turned_slightly errs by more than 1e-13 rad.
+  constexpr double kSmallTurn = 1e-3;
+  if (std::isnan(angle_[body]) || turn == 0.0) return;
+  if (std::abs(turn) > kSmallTurn) {
+    angle_[body] = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  rotation_[body] = rotation_[body].turned_slightly(turn);
+  angle_[body] = angle;
 }
 
 void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
@@ -343,8 +396,11 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
         if (excess == 0.0) continue;
         moved = true;
         // The same effective mass as for impulses, applied to a displacement instead of a velocity.
-        displace(inertia, c, arm_a, arm_b,
-                 -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal, s);
+        const Turns turns =
+            displace(inertia, c, arm_a, arm_b,
+                     -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal, s);
+        rotations.turn(c.body_a, s.angle[c.body_a], turns.a);
+        rotations.turn(c.body_b, s.angle[c.body_b], turns.b);
       }
     }
   }

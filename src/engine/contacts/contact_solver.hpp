@@ -49,10 +49,12 @@ void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia
 /// Applies the carried-over impulses of every point to the velocities of `s`.
 void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s);
 
-/// `iterations` passes of sequential impulses over the points' friction and normal constraints
-/// (no bounce: restitution comes after, in apply_restitution).
-void solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
-                      MotionState& s);
+/// At most `iterations` passes of sequential impulses over the points' friction and normal
+/// constraints (no bounce: restitution comes after, in apply_restitution), ending after the
+/// first pass in which no contact's impulses changed its two bodies' velocities by more than
+/// `tolerance` [m/s] (0: only a pass that changed nothing ends them). Returns the passes made.
+int solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
+                     double tolerance, MotionState& s);
 
 /// One pass that adds the bounce, −C_R times the approach velocity, to each point that was
 /// approaching and took an impulse. A separate pass after the others (as in Box2D 3) rather than
@@ -87,12 +89,16 @@ void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& spec
                        const BodyInertia& inertia, const MotionState& before, double h,
                        const Settings& settings, MotionState& s, SpeculativeScratch& scratch);
 
-/// The rotations of bodies by their current angles, each recomputed only when asked for after
-/// its body turned: most contact points of discs need none.
+/// The rotations of bodies by their current angles, each computed only when first asked for, and
+/// after a small turn updated without trigonometry: most contact points of discs need none, and
+/// position passes turn bodies by tiny angles.
 class RotationCache {
  public:
   /// Forgets every rotation; sized for `bodies` bodies.
   void reset(std::size_t bodies);
+  /// `body` was turned by `turn` [rad] to `angle` [rad]: its rotation follows (or is forgotten, if
+  /// the turn is large or the angle unchanged because the turn was lost to rounding).
+  void turn(BodyId body, double angle, double turn);
   /// `v` (body axes) turned by `angle` [rad], the current angle of `body`, into world axes.
   Vec2 rotate(BodyId body, double angle, const Vec2& v) {
     if (v == Vec2::Zero()) return v;  // a disc's centre: no trigonometry

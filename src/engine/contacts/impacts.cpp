@@ -156,7 +156,7 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
   // An impact takes no time: no gap to close, only the restitution targets.
   prepare_contacts(contacts, inertia, s, std::numeric_limits<double>::infinity(), settings);
   // Enough passes for Gauss–Seidel to converge on a handful of simultaneous points.
-  solve_velocities(contacts, inertia, 64, s);
+  solve_velocities(contacts, inertia, 64, 0.0, s);
   apply_restitution(contacts, inertia, s);
   for (const Contact& c : contacts) {
     Vec2 point = Vec2::Zero();

@@ -33,6 +33,18 @@ class Transform {
   /// A point (m) mapped from body to world coordinates.
   Vec2 apply(const Vec2& p) const { return position_ + rotate(p); }
 
+  /// This frame turned further by `turn` (rad, |turn| ≤ 1e-3) without trigonometry: sin and cos
+  /// of the turn from their series to third order, which err by at most 1e-13.
+  Transform turned_slightly(double turn) const {
+    const double c = 1.0 - 0.5 * turn * turn;
+    const double s = turn - turn * turn * turn / 6.0;
+    Transform t = *this;
+    t.angle_ = angle_ + turn;
+    t.cos_ = cos_ * c - sin_ * s;
+    t.sin_ = sin_ * c + cos_ * s;
+    return t;
+  }
+
  private:
   Vec2 position_ = Vec2::Zero();
   double angle_ = 0.0;

@@ -58,13 +58,11 @@ Settings read_settings(const JsonObject& root) {
       root.get_or<int>("velocity_iterations", settings.velocity_iterations);
   settings.position_iterations =
       root.get_or<int>("position_iterations", settings.position_iterations);
-  // Space does not check the threshold; a negative one would make every impact bounce.
+  settings.velocity_tolerance =
+      root.get_or<double>("velocity_tolerance", settings.velocity_tolerance);
   settings.restitution_threshold =
       root.get_or<double>("restitution_threshold", settings.restitution_threshold);
-  if (!(settings.restitution_threshold >= 0.0)) {
-    throw InputError("restitution_threshold", "must be >= 0",
-                     describe(settings.restitution_threshold));
-  }
+  validate_settings(settings);
   return settings;
 }
 
@@ -118,8 +116,8 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
   apply(overrides, document);
   const JsonObject root(document, "");
   root.allow_only({"description", "gravity", "G", "integrator", "dt", "duration", "output_dt",
-                   "velocity_iterations", "position_iterations", "restitution_threshold",
-                   "bodies"});
+                   "velocity_iterations", "velocity_tolerance", "position_iterations",
+                   "restitution_threshold", "bodies"});
   root.get_optional<std::string>("description");  // for the reader of the file: type only
   Scene scene;
   scene.settings = read_settings(root);

@@ -38,6 +38,11 @@ void positive(double value, const std::string& field, const std::string& why) {
   if (!(value > 0.0)) throw InputError(field, "must be > 0 (" + why + ")", text(value));
 }
 
+void non_negative(double value, const std::string& field) {
+  finite(value, field);
+  if (!(value >= 0.0)) throw InputError(field, "must be >= 0", text(value));
+}
+
 // Iterations of the contact solver per step at most: a step's work grows with them, and 1000 is
 // a hundred times the default.
 constexpr int kMaxIterations = 1000;
@@ -123,6 +128,13 @@ void validate_settings(const Settings& settings) {
   }
   iterations(settings.velocity_iterations, "velocity_iterations");
   iterations(settings.position_iterations, "position_iterations");
+  non_negative(settings.velocity_tolerance, "velocity_tolerance");
+  non_negative(settings.restitution_threshold, "restitution_threshold");
+  non_negative(settings.linear_slop, "linear_slop");
+  non_negative(settings.contact_margin, "contact_margin");
+  if (settings.max_impacts_per_step < 0) {
+    throw InputError("max_impacts_per_step", "must be >= 0", text(settings.max_impacts_per_step));
+  }
 }
 
 void validate_step(double dt, const std::string& field) {
