@@ -142,9 +142,24 @@ bool solve_pair(Contact& c, PairMotion& m) {
   return true;
 }
 
+// Whether a pass over `c` would change nothing: no point pushes or rubs yet, and none would
+// have to, because each already separates at least as fast as its target asks (a speculative
+// point whose gap the step does not close). Friction cannot act without a normal impulse.
+bool idle(const Contact& c, const PairMotion& m) {
+  for (int k = 0; k < c.count; ++k) {
+    const ContactPointState& p = c.points[k];
+    if (p.normal_impulse != 0.0 || p.tangent_impulse != 0.0 ||
+        m.normal_velocity(c, p) < p.target_normal_velocity) {
+      return false;
+    }
+  }
+  return true;
+}
+
 // One pass of sequential impulses over the points of `c`: friction, then the normal constraints.
 // Returns the largest change of an accumulated impulse in the pass [N·s].
 double solve_contact(Contact& c, PairMotion& m) {
+  if (idle(c, m)) return 0.0;
   double largest_change = 0.0;
   if (c.friction > 0.0) {
     // Friction first, so the normal constraints, solved last, are the ones met exactly.
