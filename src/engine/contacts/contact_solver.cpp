@@ -395,9 +395,10 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());
-  // A pass that moves nothing leaves the next one nothing to do either: stop there.
-  for (bool moved = true; moved && iterations-- > 0;) {
-    moved = false;
+  // Passes end after one that found no point overlapping by more than two slops: what is left
+  // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
+  for (bool deep = true; deep && iterations-- > 0;) {
+    deep = false;
     for (const Contact& c : contacts) {
       for (int k = 0; k < c.count; ++k) {
         const ContactPointState& p = c.points[k];
@@ -409,7 +410,7 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
             (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
         if (excess == 0.0) continue;
-        moved = true;
+        deep = deep || separation < -2.0 * slop;
         // The same effective mass as for impulses, applied to a displacement instead of a velocity.
         const Turns turns =
             displace(inertia, c, arm_a, arm_b,

@@ -114,8 +114,9 @@ class RotationCache {
   std::vector<Transform> rotation_;
 };
 
-/// `iterations` passes that move and turn bodies apart (positions only) where the contact points
-/// overlap by more than `slop` [m], removing a fifth of the excess per pass (Baumgarte's 0.2).
+/// At most `iterations` passes that move and turn bodies apart (positions only) where the
+/// contact points overlap by more than `slop` [m], removing a fifth of the excess per pass
+/// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops.
 /// `rotations` is scratch, kept by the caller so that a step does not allocate.
 void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
                        int iterations, double slop, MotionState& s, RotationCache& rotations);
