@@ -378,18 +378,6 @@ void RotationCache::reset(std::size_t bodies) {
   rotation_.resize(bodies);
 }
 
-void RotationCache::turn(BodyId body, double angle, double turn) {
-  // Beyond this, the series of Transform::turned_slightly errs by more than 1e-13 rad.
-  constexpr double kSmallTurn = 1e-3;
-  if (std::isnan(angle_[body]) || turn == 0.0) return;
-  if (std::abs(turn) > kSmallTurn) {
-    angle_[body] = std::numeric_limits<double>::quiet_NaN();
-    return;
-  }
-  rotation_[body] = rotation_[body].turned_slightly(turn);
-  angle_[body] = angle;
-}
-
 void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
                        int iterations, double slop, MotionState& s, RotationCache& rotations) {
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
@@ -411,10 +399,10 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
         if (excess == 0.0) continue;
         deep = deep || separation < -2.0 * slop;
-        // The same effective mass as for impulses, applied to a displacement instead of a velocity.
+        // The impulses' effective mass, applied to a displacement instead of a velocity; set up
+        // for the step's arms, which the small turns of these passes barely change.
         const Turns turns =
-            displace(inertia, c, arm_a, arm_b,
-                     -excess * effective_mass(inertia, c, arm_a, arm_b, c.normal) * c.normal, s);
+            displace(inertia, c, arm_a, arm_b, -excess * p.normal_mass * c.normal, s);
         rotations.turn(c.body_a, s.angle[c.body_a], turns.a);
         rotations.turn(c.body_b, s.angle[c.body_b], turns.b);
       }

@@ -4,6 +4,7 @@
 // point until all contacts agree), friction where μ > 0 (LC:Include-Dampening), and penetration
 // removal by moving positions only, which adds no energy.
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -96,9 +97,19 @@ class RotationCache {
  public:
   /// Forgets every rotation; sized for `bodies` bodies.
   void reset(std::size_t bodies);
-  /// `body` was turned by `turn` [rad] to `angle` [rad]: its rotation follows (or is forgotten, if
-  /// the turn is large or the angle unchanged because the turn was lost to rounding).
-  void turn(BodyId body, double angle, double turn);
+  /// `body` was turned by `turn` [rad] to `angle` [rad]: its rotation follows, or is forgotten
+  /// after a turn too large for the series.
+  void turn(BodyId body, double angle, double turn) {
+    // Beyond this, the series of Transform::turned_slightly errs by more than 1e-13 rad.
+    constexpr double kSmallTurn = 1e-3;
+    if (std::isnan(angle_[body]) || turn == 0.0) return;
+    if (std::abs(turn) > kSmallTurn) {
+      angle_[body] = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    rotation_[body] = rotation_[body].turned_slightly(turn);
+    angle_[body] = angle;
+  }
   /// `v` (body axes) turned by `angle` [rad], the current angle of `body`, into world axes.
   Vec2 rotate(BodyId body, double angle, const Vec2& v) {
     if (v == Vec2::Zero()) return v;  // a disc's centre: no trigonometry
