@@ -36,6 +36,11 @@ struct ContactPointState {
   double approach_velocity = 0.0;
   double normal_mass = 0.0;   ///< kg: impulse per unit change of v_rel·n (GD:impulse, C_R = 0)
   double tangent_mass = 0.0;  ///< kg: the same along the tangent
+  /// m: the arms crossed with the normal and the tangent, set up once per step. Each is both the
+  /// torque of a unit impulse along that direction (DD:torque) and the speed along it that a unit
+  /// angular velocity gives the point, (ω × r)·d = ω (r × d) (DD:chaslesThm).
+  double normal_arm_a = 0.0, normal_arm_b = 0.0;
+  double tangent_arm_a = 0.0, tangent_arm_b = 0.0;
 };
 
 /// The effective-mass matrix K of a two-point contact's normal constraints [1/kg]: entry (i, j)

@@ -83,22 +83,33 @@ struct PairMotion {
     s.angular_velocity[c.body_b] = angular_velocity_b;
   }
 
-  Vec2 relative_velocity(const ContactPointState& p) const {
-    return point_relative_velocity(velocity_a, angular_velocity_a, velocity_b, angular_velocity_b,
-                                   p);
+  /// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m]
+  /// (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
+  double velocity_along(const Vec2& d, double arm_a, double arm_b) const {
+    return (velocity_a - velocity_b).dot(d) + angular_velocity_a * arm_a -
+           angular_velocity_b * arm_b;
   }
   double normal_velocity(const Contact& c, const ContactPointState& p) const {
-    return relative_velocity(p).dot(c.normal);
+    return velocity_along(c.normal, p.normal_arm_a, p.normal_arm_b);
+  }
+  double tangent_velocity(const Vec2& tangent, const ContactPointState& p) const {
+    return velocity_along(tangent, p.tangent_arm_a, p.tangent_arm_b);
   }
 
-  /// Applies `impulse` to A at its arm and the reaction to B (DD:impulseV, DD:torque,
-  /// TM:NewtonThirdLawMot).
-  void apply(const ContactPointState& p, const Vec2& impulse) {
-    const Vec2 reaction = tm::reaction_force(impulse);
+  /// Applies the impulse j d [N·s] to A at a point whose arms crossed with d are `arm_a` and
+  /// `arm_b` [m], and the reaction to B (DD:impulseV, DD:torque, TM:NewtonThirdLawMot).
+  void push_along(const Vec2& d, double arm_a, double arm_b, double j) {
+    const Vec2 impulse = j * d;
     velocity_a += dd::velocity_change_from_impulse(impulse, inverse_mass_a);
-    angular_velocity_a += dd::torque(p.arm_a, impulse) * inverse_moment_a;
-    velocity_b += dd::velocity_change_from_impulse(reaction, inverse_mass_b);
-    angular_velocity_b += dd::torque(p.arm_b, reaction) * inverse_moment_b;
+    angular_velocity_a += j * arm_a * inverse_moment_a;
+    velocity_b += dd::velocity_change_from_impulse(tm::reaction_force(impulse), inverse_mass_b);
+    angular_velocity_b -= j * arm_b * inverse_moment_b;
+  }
+  void push_normal(const Contact& c, const ContactPointState& p, double j) {
+    push_along(c.normal, p.normal_arm_a, p.normal_arm_b, j);
+  }
+  void push_tangent(const Vec2& tangent, const ContactPointState& p, double j) {
+    push_along(tangent, p.tangent_arm_a, p.tangent_arm_b, j);
   }
 };
 
@@ -135,8 +146,8 @@ bool solve_pair(Contact& c, PairMotion& m) {
   } else {
     return false;
   }
-  m.apply(p, (x.x() - old.x()) * c.normal);
-  m.apply(q, (x.y() - old.y()) * c.normal);
+  m.push_normal(c, p, x.x() - old.x());
+  m.push_normal(c, q, x.y() - old.y());
   p.normal_impulse = x.x();
   q.normal_impulse = x.y();
   return true;
@@ -167,10 +178,10 @@ double solve_contact(Contact& c, PairMotion& m) {
     for (int k = 0; k < c.count; ++k) {
       ContactPointState& p = c.points[k];
       const double limit = c.friction * p.normal_impulse;
-      const double change = -p.tangent_mass * m.relative_velocity(p).dot(tangent);
+      const double change = -p.tangent_mass * m.tangent_velocity(tangent, p);
       const double total = std::clamp(p.tangent_impulse + change, -limit, limit);
       largest_change = std::max(largest_change, std::abs(total - p.tangent_impulse));
-      m.apply(p, (total - p.tangent_impulse) * tangent);
+      m.push_tangent(tangent, p, total - p.tangent_impulse);
       p.tangent_impulse = total;
     }
   }
@@ -186,7 +197,7 @@ double solve_contact(Contact& c, PairMotion& m) {
     const double change = p.normal_mass * (p.target_normal_velocity - m.normal_velocity(c, p));
     const double total = std::max(p.normal_impulse + change, 0.0);
     largest_change = std::max(largest_change, std::abs(total - p.normal_impulse));
-    m.apply(p, (total - p.normal_impulse) * c.normal);
+    m.push_normal(c, p, total - p.normal_impulse);
     p.normal_impulse = total;
   }
   return largest_change;
@@ -240,8 +251,8 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c) {
   k.k22 = 1.0 / q.normal_mass;
   // The off-diagonal term: arms of point 0 against arms of point 1.
   k.k12 = inertia.inverse_mass[c.body_a] + inertia.inverse_mass[c.body_b] +
-          inertia.inverse_moment[c.body_a] * cross(p.arm_a, c.normal) * cross(q.arm_a, c.normal) +
-          inertia.inverse_moment[c.body_b] * cross(p.arm_b, c.normal) * cross(q.arm_b, c.normal);
+          inertia.inverse_moment[c.body_a] * p.normal_arm_a * q.normal_arm_a +
+          inertia.inverse_moment[c.body_b] * p.normal_arm_b * q.normal_arm_b;
   const double determinant = k.k11 * k.k22 - k.k12 * k.k12;
   // Box2D's bound on K's condition number, past which the block solve amplifies round-off.
   k.solvable = k.k11 * k.k11 < 1000.0 * determinant;
@@ -258,17 +269,22 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c) {
 void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
   for (Contact& c : contacts) {
+    const Vec2 tangent = tangent_of(c.normal);
     for (int k = 0; k < c.count; ++k) {
       ContactPointState& p = c.points[k];
+      p.normal_arm_a = dd::torque(p.arm_a, c.normal);
+      p.normal_arm_b = dd::torque(p.arm_b, c.normal);
+      p.tangent_arm_a = dd::torque(p.arm_a, tangent);
+      p.tangent_arm_b = dd::torque(p.arm_b, tangent);
       p.normal_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, c.normal);
-      if (k == 1) c.block = normal_block(inertia, c);
-      p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent_of(c.normal));
+      p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent);
       const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
       // A speculative point (still apart) bounces too if the solver ends up pushing on it:
       // apply_restitution acts only where the normal impulse is positive.
       p.approach_velocity = approach < -settings.restitution_threshold ? approach : 0.0;
     }
+    if (c.count == 2) c.block = normal_block(inertia, c);
   }
 }
 
@@ -277,7 +293,8 @@ void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia
     PairMotion m(c, inertia, s);
     for (int k = 0; k < c.count; ++k) {
       const ContactPointState& p = c.points[k];
-      m.apply(p, p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal));
+      m.push_normal(c, p, p.normal_impulse);
+      m.push_tangent(tangent_of(c.normal), p, p.tangent_impulse);
     }
     m.store(c, s);
   }
@@ -311,7 +328,7 @@ void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inerti
       const double change =
           -p.normal_mass * (m.normal_velocity(c, p) + c.restitution * p.approach_velocity);
       const double total = std::max(p.normal_impulse + change, 0.0);
-      m.apply(p, (total - p.normal_impulse) * c.normal);
+      m.push_normal(c, p, total - p.normal_impulse);
       p.normal_impulse = total;
     }
     m.store(c, s);
