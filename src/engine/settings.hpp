@@ -28,6 +28,10 @@ struct Settings {
   /// velocity by more than this; a resting stack, warm-started with last step's impulses, then
   /// needs a pass or two instead of all of them.
   double velocity_tolerance = 1e-5;
+  /// Islands of contacts (joined through the dynamic bodies they share) with at most this many
+  /// points get their normal impulses solved exactly, all at once, before the passes; 0: never.
+  /// Sequential impulses alone let a light body under a heavy one sink.
+  int direct_solve_points = 64;
   int position_iterations = 4;  ///< penetration-removal passes per step
   /// Impacts slower than this [m/s] are treated as resting contact (no bounce), which ends the
   /// infinite sequence of ever smaller bounces (a Zeno sequence) of an inelastic ball.

@@ -207,6 +207,8 @@ void Space::advance(double h) {
   if (!contacts_.empty()) {
     prepare_contacts(contacts_, inertia_, start_, h, settings_);
     warm_start(contacts_, inertia_, state_);
+    solve_small_islands(contacts_, inertia_, settings_.direct_solve_points, state_,
+                        island_scratch_);
     solve_velocities(contacts_, inertia_, settings_.velocity_iterations,
                      settings_.velocity_tolerance, state_);
     apply_restitution(contacts_, inertia_, state_);

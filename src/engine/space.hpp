@@ -12,6 +12,7 @@
 #include "engine/contacts/collision_detection.hpp"
 #include "engine/contacts/contact_solver.hpp"
 #include "engine/contacts/impacts.hpp"
+#include "engine/contacts/island_solver.hpp"
 #include "engine/contacts/local_impacts.hpp"
 #include "engine/dynamics/force_model.hpp"
 #include "engine/dynamics/integrator.hpp"
@@ -111,6 +112,7 @@ class Space {
   std::vector<Contact> contacts_, previous_contacts_, impact_scratch_;
   std::vector<Contact> speculative_contacts_;  // impacts on resting bodies, this step only
   SpeculativeScratch speculative_scratch_;
+  IslandScratch island_scratch_;
   std::vector<ProxyPair> contact_pairs_;
   RotationCache rotations_;
 };

@@ -58,6 +58,13 @@ Vec2 point_relative_velocity(const Vec2& velocity_a, double angular_velocity_a,
                                dd::point_velocity(velocity_b, angular_velocity_b, p.arm_b));
 }
 
+// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m]
+// (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
+double velocity_along(const Vec2& velocity_a, double angular_velocity_a, const Vec2& velocity_b,
+                      double angular_velocity_b, const Vec2& d, double arm_a, double arm_b) {
+  return (velocity_a - velocity_b).dot(d) + angular_velocity_a * arm_a - angular_velocity_b * arm_b;
+}
+
 // The velocities and inverse inertias of a contact's two bodies, copied out of the state arrays
 // while its points are solved: the inner loop then reads two cache lines rather than eight
 // arrays.
@@ -83,11 +90,9 @@ struct PairMotion {
     s.angular_velocity[c.body_b] = angular_velocity_b;
   }
 
-  /// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m]
-  /// (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
   double velocity_along(const Vec2& d, double arm_a, double arm_b) const {
-    return (velocity_a - velocity_b).dot(d) + angular_velocity_a * arm_a -
-           angular_velocity_b * arm_b;
+    return gp::velocity_along(velocity_a, angular_velocity_a, velocity_b, angular_velocity_b, d,
+                              arm_a, arm_b);
   }
   double normal_velocity(const Contact& c, const ContactPointState& p) const {
     return velocity_along(c.normal, p.normal_arm_a, p.normal_arm_b);
@@ -118,6 +123,19 @@ struct PairMotion {
 Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
   return point_relative_velocity(s.velocity[c.body_a], s.angular_velocity[c.body_a],
                                  s.velocity[c.body_b], s.angular_velocity[c.body_b], p);
+}
+
+double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
+  return velocity_along(s.velocity[c.body_a], s.angular_velocity[c.body_a], s.velocity[c.body_b],
+                        s.angular_velocity[c.body_b], c.normal, p.normal_arm_a, p.normal_arm_b);
+}
+
+void apply_contact_impulse(const Contact& c, const ContactPointState& p, double normal,
+                           double tangent, const BodyInertia& inertia, MotionState& s) {
+  PairMotion m(c, inertia, s);
+  m.push_normal(c, p, normal);
+  m.push_tangent(tangent_of(c.normal), p, tangent);
+  m.store(c, s);
 }
 
 namespace {

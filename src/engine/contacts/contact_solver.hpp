@@ -26,6 +26,14 @@ struct BodyInertia {
 /// [m/s] (DD:chaslesThm, DD:reVeInColl).
 Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
 
+/// v_rel·n at point `p` of `c` in state `s` [m/s], from the arms that prepare_contacts set up.
+double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
+
+/// Applies the impulse `normal` n + `tangent` t [N·s] at point `p` to A and the reaction to B
+/// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot), with the arms that prepare_contacts set up.
+void apply_contact_impulse(const Contact& c, const ContactPointState& p, double normal,
+                           double tangent, const BodyInertia& inertia, MotionState& s);
+
 /// IM:col2D at point `p` of `c` in state `s`: the impulse j n that gives the point's normal
 /// velocity −C_R times its value before, applied to both bodies' velocities; returns j [N·s].
 double apply_collision_response(const Contact& c, const ContactPointState& p, double restitution,

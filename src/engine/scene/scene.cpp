@@ -60,6 +60,8 @@ Settings read_settings(const JsonObject& root) {
       root.get_or<int>("position_iterations", settings.position_iterations);
   settings.velocity_tolerance =
       root.get_or<double>("velocity_tolerance", settings.velocity_tolerance);
+  settings.direct_solve_points =
+      root.get_or<int>("direct_solve_points", settings.direct_solve_points);
   settings.restitution_threshold =
       root.get_or<double>("restitution_threshold", settings.restitution_threshold);
   validate_settings(settings);
@@ -116,8 +118,8 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
   apply(overrides, document);
   const JsonObject root(document, "");
   root.allow_only({"description", "gravity", "G", "integrator", "dt", "duration", "output_dt",
-                   "velocity_iterations", "velocity_tolerance", "position_iterations",
-                   "restitution_threshold", "bodies"});
+                   "velocity_iterations", "velocity_tolerance", "direct_solve_points",
+                   "position_iterations", "restitution_threshold", "bodies"});
   root.get_optional<std::string>("description");  // for the reader of the file: type only
   Scene scene;
   scene.settings = read_settings(root);

@@ -43,15 +43,17 @@ void non_negative(double value, const std::string& field) {
   if (!(value >= 0.0)) throw InputError(field, "must be >= 0", text(value));
 }
 
+void count_up_to(int value, int most, const std::string& field) {
+  if (value < 0 || value > most) {
+    throw InputError(field, "must be in [0, " + std::to_string(most) + "]", text(value));
+  }
+}
+
 // Iterations of the contact solver per step at most: a step's work grows with them, and 1000 is
 // a hundred times the default.
 constexpr int kMaxIterations = 1000;
-
-void iterations(int value, const std::string& field) {
-  if (value < 0 || value > kMaxIterations) {
-    throw InputError(field, "must be in [0, " + std::to_string(kMaxIterations) + "]", text(value));
-  }
-}
+// Points of an island solved directly at most: the dense solve grows with their cube.
+constexpr int kMaxDirectSolvePoints = 256;
 
 /// The mass, centre of mass and moment of inertia the engine derives from the shapes, and the
 /// shapes placed about that centre, must be finite, and a dynamic body's mass > 0: finite inputs
@@ -126,8 +128,9 @@ void validate_settings(const Settings& settings) {
     finite(*settings.G, "G");
     if (*settings.G < 0.0) throw InputError("G", "must be >= 0", text(*settings.G));
   }
-  iterations(settings.velocity_iterations, "velocity_iterations");
-  iterations(settings.position_iterations, "position_iterations");
+  count_up_to(settings.velocity_iterations, kMaxIterations, "velocity_iterations");
+  count_up_to(settings.position_iterations, kMaxIterations, "position_iterations");
+  count_up_to(settings.direct_solve_points, kMaxDirectSolvePoints, "direct_solve_points");
   non_negative(settings.velocity_tolerance, "velocity_tolerance");
   non_negative(settings.restitution_threshold, "restitution_threshold");
   non_negative(settings.linear_slop, "linear_slop");

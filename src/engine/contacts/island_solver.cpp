@@ -1,0 +1,190 @@
+#include "engine/contacts/island_solver.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace gp {
+
+namespace {
+
+BodyId root_of(std::vector<BodyId>& parent, BodyId body) {
+  while (parent[body] != body) {
+    parent[body] = parent[parent[body]];  // path halving keeps the trees flat
+    body = parent[body];
+  }
+  return body;
+}
+
+bool movable(const BodyInertia& m, BodyId body) {
+  return m.inverse_mass[body] > 0.0 || m.inverse_moment[body] > 0.0;
+}
+
+// K_ij: the change of point i's normal velocity per unit normal impulse at point j, summed over
+// the bodies the two points share, A counting + and B − (GD:impulse's denominator when i = j).
+double coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
+                const ContactPointState& pj, const BodyInertia& m) {
+  const double directions = ci.normal.dot(cj.normal);
+  const auto shared = [&](BodyId bi, double arm_i, BodyId bj, double arm_j) {
+    return bi == bj ? m.inverse_mass[bi] * directions + m.inverse_moment[bi] * arm_i * arm_j : 0.0;
+  };
+  return shared(ci.body_a, pi.normal_arm_a, cj.body_a, pj.normal_arm_a) -
+         shared(ci.body_a, pi.normal_arm_a, cj.body_b, pj.normal_arm_b) -
+         shared(ci.body_b, pi.normal_arm_b, cj.body_a, pj.normal_arm_a) +
+         shared(ci.body_b, pi.normal_arm_b, cj.body_b, pj.normal_arm_b);
+}
+
+// Groups the contacts by island into scratch.order; scratch.island_start and scratch.points,
+// indexed by an island's root body, give each island's first entry and its number of points.
+void find_islands(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+                  IslandScratch& scratch) {
+  const std::size_t bodies = inertia.inverse_mass.size();
+  scratch.parent.resize(bodies);
+  std::iota(scratch.parent.begin(), scratch.parent.end(), BodyId{0});
+  for (const Contact& c : contacts) {
+    if (movable(inertia, c.body_a) && movable(inertia, c.body_b)) {
+      scratch.parent[root_of(scratch.parent, c.body_a)] = root_of(scratch.parent, c.body_b);
+    }
+  }
+  const auto root = [&](const Contact& c) {
+    return root_of(scratch.parent, movable(inertia, c.body_a) ? c.body_a : c.body_b);
+  };
+  scratch.points.assign(bodies, 0);
+  scratch.island_start.assign(bodies, 0);
+  scratch.cursor.assign(bodies, 0);
+  std::vector<std::size_t>& counts = scratch.cursor;
+  for (const Contact& c : contacts) {
+    const BodyId r = root(c);
+    scratch.points[r] += static_cast<std::size_t>(c.count);
+    ++counts[r];
+  }
+  std::size_t next = 0;
+  for (std::size_t r = 0; r < bodies; ++r) {
+    scratch.island_start[r] = next;
+    next += counts[r];
+    counts[r] = scratch.island_start[r];
+  }
+  scratch.order.resize(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) scratch.order[counts[root(contacts[i])]++] = i;
+}
+
+// The active-set method of solve_small_islands on scratch.rows; leaves the new normal impulses in
+// scratch.impulse. Returns false if it does not settle or K restricted to the pushing points is
+// singular (redundant points).
+bool solve_island(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+                  const MotionState& s, IslandScratch& scratch) {
+  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
+  auto k = scratch.k.topLeftCorner(n, n);
+  auto w0 = scratch.residual.head(n);
+  auto lambda = scratch.impulse.head(n);
+  auto change = scratch.change.head(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Contact& ci = contacts[scratch.rows[i].contact];
+    const ContactPointState& pi = ci.points[scratch.rows[i].point];
+    for (Eigen::Index j = 0; j <= i; ++j) {
+      const Contact& cj = contacts[scratch.rows[j].contact];
+      k(i, j) = k(j, i) = coupling(ci, pi, cj, cj.points[scratch.rows[j].point], inertia);
+    }
+    w0(i) = contact_normal_velocity(s, ci, pi) - pi.target_normal_velocity;
+    lambda(i) = pi.normal_impulse;
+    scratch.active[i] = pi.normal_impulse > 0.0 || w0(i) < 0.0;
+  }
+  auto start = scratch.initial.head(n);
+  start = lambda;
+  // Each round either settles or moves a point between the pushing and the free set; a
+  // complementarity problem with a positive definite K settles within a few rounds in practice.
+  const int rounds = 2 * static_cast<int>(n) + 4;
+  for (int round = 0; round < rounds; ++round) {
+    scratch.active_rows.clear();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (scratch.active[i]) scratch.active_rows.push_back(static_cast<int>(i));
+    }
+    const auto a = static_cast<Eigen::Index>(scratch.active_rows.size());
+    // Free points let go of their impulse: Δλ = −λ₀ there.
+    for (Eigen::Index i = 0; i < n; ++i) change(i) = scratch.active[i] ? 0.0 : -start(i);
+    auto k_active = scratch.k_active.topLeftCorner(a, a);
+    auto rhs = scratch.rhs.head(a);
+    for (Eigen::Index r = 0; r < a; ++r) {
+      const int i = scratch.active_rows[r];
+      rhs(r) = -(w0(i) + k.row(i).dot(change));
+      for (Eigen::Index q = 0; q < a; ++q) k_active(r, q) = k(i, scratch.active_rows[q]);
+      // A heap is often statically indeterminate (a box across two others: more points than
+      // the bodies' vertical and turning freedoms), which makes K singular. A compliance of
+      // 1e-10 of each point's own makes it definite and its impulses unique, and leaves the
+      // velocities, which are unique anyway, within 1e-10 of exact.
+      k_active(r, r) *= 1.0 + 1e-10;
+    }
+    if (a > 0) {
+      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> factor(k_active);
+      if (factor.info() != Eigen::Success) return false;
+      factor.solveInPlace(rhs);
+      for (Eigen::Index r = 0; r < a; ++r) change(scratch.active_rows[r]) = rhs(r);
+    }
+    bool settled = true;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double impulse = start(i) + change(i);
+      const double w = w0(i) + k.row(i).dot(change);
+      // Round-off of the solve, relative to the impulses and speeds at stake.
+      if (scratch.active[i] && impulse < -1e-12 * (1.0 + std::abs(start(i)))) {
+        scratch.active[i] = 0;
+        settled = false;
+      } else if (!scratch.active[i] && w < -1e-12 * (1.0 + std::abs(w0(i)))) {
+        scratch.active[i] = 1;
+        settled = false;
+      }
+    }
+    if (settled) {
+      lambda = (start + change).cwiseMax(0.0);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+int solve_small_islands(std::vector<Contact>& contacts, const BodyInertia& inertia,
+                        std::size_t max_points, MotionState& s, IslandScratch& scratch) {
+  if (contacts.empty() || max_points == 0) return 0;
+  find_islands(contacts, inertia, scratch);
+  const auto size = static_cast<Eigen::Index>(max_points);
+  if (scratch.k.rows() < size) {
+    scratch.k.resize(size, size);
+    scratch.k_active.resize(size, size);
+    scratch.residual.resize(size);
+    scratch.initial.resize(size);
+    scratch.impulse.resize(size);
+    scratch.change.resize(size);
+    scratch.rhs.resize(size);
+    scratch.active.resize(max_points);
+    scratch.rows.reserve(max_points);
+    scratch.active_rows.reserve(max_points);
+  }
+  int solved = 0;
+  const std::size_t bodies = inertia.inverse_mass.size();
+  for (std::size_t r = 0; r < bodies; ++r) {
+    if (scratch.points[r] == 0 || scratch.points[r] > max_points) continue;
+    scratch.rows.clear();
+    const std::size_t first = scratch.island_start[r];
+    for (std::size_t e = first; e < scratch.cursor[r]; ++e) {
+      for (int k = 0; k < contacts[scratch.order[e]].count; ++k) {
+        scratch.rows.push_back({scratch.order[e], k});
+      }
+    }
+    if (!solve_island(contacts, inertia, s, scratch)) continue;
+    ++solved;
+    for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
+      Contact& c = contacts[scratch.rows[i].contact];
+      ContactPointState& p = c.points[scratch.rows[i].point];
+      const double normal = scratch.impulse(static_cast<Eigen::Index>(i));
+      const double limit = c.friction * normal;
+      const double tangent = std::clamp(p.tangent_impulse, -limit, limit);
+      apply_contact_impulse(c, p, normal - p.normal_impulse, tangent - p.tangent_impulse, inertia,
+                            s);
+      p.normal_impulse = normal;
+      p.tangent_impulse = tangent;
+    }
+  }
+  return solved;
+}
+
+}  // namespace gp
