@@ -20,7 +20,8 @@ struct VerifyOptions {
   bool quick = false;          ///< short runs only (what ctest runs)
   /// The JUnit report of a run of the Catch2 tests, whose results the audit page shows.
   std::optional<std::filesystem::path> test_results;
-  bool long_runs = false;      ///< the rain and pyramid for 1e6 steps each (hours)
+  bool long_runs = false;     ///< the rain and pyramid for 1e6 steps each (hours)
+  int speed_repetitions = 3;  ///< runs per workload and engine in the speed section
 };
 
 /// `gamephysics verify`: the main job. The SRS audit (catalogue, functions, tests, dimensional

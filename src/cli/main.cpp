@@ -25,6 +25,10 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   verify->add_flag("--long", verification.long_runs,
                    "Long runs of rain1000 and pyramid20 at 1e6 steps each (hours)");
+  verify
+      ->add_option("--speed-repetitions", verification.speed_repetitions,
+                   "Runs of each workload in each engine, speed against the peers (default 3)")
+      ->check(CLI::PositiveNumber);
 
   bool check_only = false;
   std::string out;

@@ -47,6 +47,7 @@ int verify(const VerifyOptions& options) {
   suite.out = options.out;
   suite.quick = options.quick;
   suite.long_runs = options.long_runs;
+  suite.speed_repetitions = options.speed_repetitions;
   suite.progress = &std::cout;
   std::cout << "Verification suite against the SUNDIALS oracle ("
             << (options.quick ? "quick" : "full") << "):\n";

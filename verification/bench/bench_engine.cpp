@@ -48,4 +48,10 @@ std::string EngineRun::describe() const {
   return text.str();
 }
 
+std::vector<std::string> engine_settings(const Scene& scene) {
+  std::vector<std::string> lines;
+  for (Engine engine : kEngines) lines.push_back(EngineRun(engine, scene).describe());
+  return lines;
+}
+
 }  // namespace gp::bench

@@ -2,9 +2,11 @@
 // Our engine and the two peers behind one stepping interface, so that one benchmark body times
 // all three alike.
 
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "engine/scene/scene.hpp"
 #include "verification/peers/peer_world.hpp"
@@ -12,6 +14,9 @@
 namespace gp::bench {
 
 enum class Engine { Ours, Chipmunk, Box2d };
+
+/// Ours first, as the ratios are of our time to a peer's: the order of the runs and of the tables.
+inline constexpr std::array<Engine, 3> kEngines{Engine::Ours, Engine::Chipmunk, Engine::Box2d};
 
 /// "ours", "chipmunk", "box2d".
 std::string_view engine_label(Engine engine);
@@ -30,5 +35,8 @@ class EngineRun {
   std::unique_ptr<Space> ours_;
   std::unique_ptr<peers::PeerWorld> peer_;
 };
+
+/// The engines and the settings they run `scene` with, a line each in the order of kEngines.
+std::vector<std::string> engine_settings(const Scene& scene);
 
 }  // namespace gp::bench

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <exception>
-#include <memory>
 #include <string>
 
 #include "verification/bench/bench_engine.hpp"
+#include "verification/bench/timed_run.hpp"
 
 namespace gp::bench {
 
@@ -17,15 +17,9 @@ void run_workload(benchmark::State& state, const Workload& w, Engine engine) {
   double moved = 0.0;
   try {
     for (auto _ : state) {
-      state.PauseTiming();
-      auto run = std::make_unique<EngineRun>(engine, w.scene);
-      const Vec2 start = w.watched ? run->state(*w.watched).position : Vec2::Zero();
-      state.ResumeTiming();
-      for (int i = 0; i < w.steps; ++i) run->step(w.scene.dt);
-      state.PauseTiming();
-      if (w.watched) moved = (run->state(*w.watched).position - start).norm();
-      run.reset();
-      state.ResumeTiming();
+      const TimedRun run = time_run(w, engine);
+      state.SetIterationTime(run.seconds);
+      moved = run.moved_m;
     }
   } catch (const std::exception& e) {  // NumericalError: a state became non-finite
     state.SkipWithError(e.what());
@@ -48,12 +42,12 @@ double largest(const std::vector<double>& v) {
 
 void register_benchmarks(const std::vector<Workload>& list) {
   for (const Workload& w : list) {
-    for (Engine engine : {Engine::Ours, Engine::Chipmunk, Engine::Box2d}) {
+    for (Engine engine : kEngines) {
       const std::string name = w.name + "/" + std::string(engine_label(engine));
       benchmark::RegisterBenchmark(
           name.c_str(), [&w, engine](benchmark::State& s) { run_workload(s, w, engine); })
           ->Iterations(1)
-          ->UseRealTime()
+          ->UseManualTime()
           ->Unit(benchmark::kMillisecond)
           ->ComputeStatistics("min", smallest)
           ->ComputeStatistics("max", largest);

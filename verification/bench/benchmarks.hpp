@@ -1,6 +1,6 @@
 #pragma once
 // Google Benchmark registration of every workload in every engine: one benchmark iteration is one
-// whole run, timed without the set-up and tear-down of the scene.
+// whole run, timed by time_run (timed_run.hpp) without the set-up and tear-down of the scene.
 
 #include <vector>
 
@@ -14,8 +14,8 @@ inline constexpr const char* kMovedCounter = "moved_m";
 inline constexpr const char* kBodyStepsCounter = "body_steps_per_s";
 
 /// Registers "<workload>/<engine>" for each workload and engine, the engines of a workload one
-/// after another (ours, chipmunk, box2d), each as 1 iteration per repetition with wall-clock time
-/// in ms. `list` must outlive the run of the benchmarks.
+/// after another (ours, chipmunk, box2d), each as 1 iteration per repetition with the wall-clock
+/// time of time_run as its manual time, in ms. `list` must outlive the run of the benchmarks.
 void register_benchmarks(const std::vector<Workload>& list);
 
 }  // namespace gp::bench

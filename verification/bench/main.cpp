@@ -46,11 +46,7 @@ int main(int argc, char** argv) {
       gp::bench::workloads(std::string(GP_SOURCE_DIR) + "/scenes", quick);
   gp::bench::register_benchmarks(workloads);
   // Described before printing, so that Chipmunk's banner on its first space comes first.
-  std::vector<std::string> engines;
-  for (auto engine :
-       {gp::bench::Engine::Ours, gp::bench::Engine::Chipmunk, gp::bench::Engine::Box2d}) {
-    engines.push_back(gp::bench::EngineRun(engine, workloads.front().scene).describe());
-  }
+  const std::vector<std::string> engines = gp::bench::engine_settings(workloads.front().scene);
   std::cout << "Engines, on every workload:\n";
   for (const std::string& engine : engines) std::cout << "  " << engine << "\n";
   std::cout.flush();

@@ -1,41 +1,14 @@
 #include "verification/bench/summary.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <map>
 
 #include "verification/bench/bench_engine.hpp"
 #include "verification/bench/benchmarks.hpp"
+#include "verification/bench/formatted.hpp"
 
 namespace gp::bench {
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2.0;
-}
-
-double sample_stddev(const std::vector<double>& v) {
-  if (v.size() < 2) return 0.0;
-  double mean = 0.0;
-  for (double x : v) mean += x;
-  mean /= static_cast<double>(v.size());
-  double squares = 0.0;
-  for (double x : v) squares += (x - mean) * (x - mean);
-  return std::sqrt(squares / static_cast<double>(v.size() - 1));
-}
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
-}  // namespace
 
 std::vector<Figures> figures(const std::vector<Workload>& list,
                              const std::vector<benchmark::BenchmarkReporter::Run>& runs) {
@@ -66,28 +39,22 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
   }
   std::vector<Figures> all;
   for (const Workload& w : list) {
-    for (Engine engine : {Engine::Ours, Engine::Chipmunk, Engine::Box2d}) {
+    for (Engine engine : kEngines) {
       const std::string label(engine_label(engine));
       const auto found = by_name.find(w.name + "/" + label);
       if (found == by_name.end()) continue;
       const Measured& m = found->second;
-      Figures f{w.name, label};
-      if (m.ms.empty()) {
-        f.repetitions = static_cast<std::size_t>(m.repetitions);
-        f.median_ms = m.statistic.at("median");
-        f.min_ms = m.statistic.at("min");
-        f.max_ms = m.statistic.at("max");
-        f.stddev_ms = m.statistic.at("stddev");
-      } else {
-        f.repetitions = m.ms.size();
-        f.median_ms = median(m.ms);
-        f.min_ms = *std::min_element(m.ms.begin(), m.ms.end());
-        f.max_ms = *std::max_element(m.ms.begin(), m.ms.end());
-        f.stddev_ms = sample_stddev(m.ms);
+      if (!m.ms.empty()) {
+        all.push_back(figures_of(w, label, m.ms, m.moved_m));
+        continue;
       }
+      Figures f{w.name, label, static_cast<std::size_t>(m.repetitions)};
+      f.median_ms = m.statistic.at("median");
+      f.min_ms = m.statistic.at("min");
+      f.max_ms = m.statistic.at("max");
+      f.stddev_ms = m.statistic.at("stddev");
+      f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
       f.moved_m = m.moved_m;
-      f.body_steps_per_s =
-          static_cast<double>(w.scene.bodies.size()) * w.steps / (f.median_ms / 1e3);
       all.push_back(std::move(f));
     }
   }
@@ -101,12 +68,9 @@ void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   std::snprintf(line, sizeof line, "%-10s %-9s %4s %10s %10s %10s %9s %11s %14s\n", "workload",
                 "engine", "reps", "median", "min", "max", "stddev", "ours/engine", "body-steps/s");
   out << line;
-  std::map<std::string, double> ours_median;
   for (const Figures& f : all) {
-    if (f.engine == engine_label(Engine::Ours)) ours_median[f.workload] = f.median_ms;
-    const auto ours = ours_median.find(f.workload);
-    const std::string ratio =
-        ours == ours_median.end() ? "-" : format("%.2f", ours->second / f.median_ms);
+    const auto ratio_value = ours_over_engine(all, f);
+    const std::string ratio = ratio_value ? formatted("%.2f", *ratio_value) : "-";
     std::snprintf(line, sizeof line, "%-10s %-9s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g\n",
                   f.workload.c_str(), f.engine.c_str(), f.repetitions, f.median_ms, f.min_ms,
                   f.max_ms, f.stddev_ms, ratio.c_str(), f.body_steps_per_s);
@@ -114,8 +78,8 @@ void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   }
   for (const Figures& f : all) {
     if (f.moved_m < 0.0) continue;
-    out << f.workload << ": the watched (top) body moved " << format("%.4g", f.moved_m) << " m in "
-        << f.engine << "\n";
+    out << f.workload << ": the watched (top) body moved " << formatted("%.4g", f.moved_m)
+        << " m in " << f.engine << "\n";
   }
 }
 

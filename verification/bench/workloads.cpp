@@ -81,7 +81,7 @@ Scene rain(std::size_t balls) {
   return scene;
 }
 
-std::vector<Workload> workloads(const std::filesystem::path& scenes_dir, bool quick) {
+std::vector<Workload> headline_workloads(const std::filesystem::path& scenes_dir) {
   std::vector<Workload> list;
   list.push_back({"free10000", free_fall(10000), kFreeFallSteps, std::nullopt});
   list.push_back({"rain1000", load_scene(scenes_dir / "rain1000.json"), kRunSteps, std::nullopt});
@@ -91,6 +91,11 @@ std::vector<Workload> workloads(const std::filesystem::path& scenes_dir, bool qu
     if (pyramid.bodies[id].position.y() > pyramid.bodies[top].position.y()) top = id;
   }
   list.push_back({"pyramid20", std::move(pyramid), kRunSteps, top});
+  return list;
+}
+
+std::vector<Workload> workloads(const std::filesystem::path& scenes_dir, bool quick) {
+  std::vector<Workload> list = headline_workloads(scenes_dir);
   list.push_back({"rain4000", rain(4000), kRunSteps, std::nullopt});
   if (!quick) list.push_back({"rain16000", rain(16000), kRunSteps, std::nullopt});
   return list;

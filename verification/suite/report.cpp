@@ -7,6 +7,7 @@
 
 #include "verification/html/html_escape.hpp"
 #include "verification/suite/report.hpp"
+#include "verification/suite/speed_report.hpp"
 
 namespace gp::verification {
 
@@ -38,9 +39,15 @@ ReportSummary summarise(const std::vector<Check>& checks) {
 }
 
 void write_report(const std::filesystem::path& out, const std::vector<Check>& checks,
-                  const CsvFiles& data, const std::vector<std::string>& plots) {
+                  const CsvFiles& data, const std::vector<std::string>& plots,
+                  const SpeedSection& speed) {
   std::filesystem::create_directories(out / "data");
   for (const auto& [name, text] : data) std::ofstream(out / "data" / name) << text;
+  if (speed.table) {
+    std::ofstream(out / "speed.json") << speed_json(*speed.table);
+  } else {
+    std::filesystem::remove(out / "speed.json");
+  }
   const ReportSummary summary = summarise(checks);
   std::ofstream md(out / "report.md");
   std::ofstream html(out / "index.html");
@@ -88,6 +95,8 @@ void write_report(const std::filesystem::path& out, const std::vector<Check>& ch
          << "</td><td>" << html_escape(c.criterion) << "</td><td>" << result << "</td></tr>";
   }
   html << "</table>";
+  md << speed_markdown(speed);
+  html << speed_html(speed);
   if (!plots.empty()) {
     md << "\n## Plots\n\n";
     html << "<h2>Plots</h2>";

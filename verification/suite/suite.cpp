@@ -21,9 +21,10 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
   add(long_run_checks(o));
   add(peer_checks(scenes, o, data));
   if (!o.quick) add(work_precision_checks(scenes, o, data));
-  write_report(o.out, checks, data, {});
+  const SpeedSection speed = speed_against_peers(o);
+  write_report(o.out, checks, data, {}, speed);
   const auto plots = make_plots(o.root / "verification" / "suite" / "plots.py", o.out);
-  write_report(o.out, checks, data, plots);
+  write_report(o.out, checks, data, plots, speed);
 
   const ReportSummary summary = summarise(checks);
   std::ostream& out = o.progress ? *o.progress : std::cout;
@@ -38,6 +39,11 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
     out << "  FAILED: " << c->section << ": " << c->name << ": " << c->measured
         << " (criterion: " << c->criterion << ")\n";
   }
+  out << "  speed against the peers: "
+      << (speed.table
+              ? figure(speed.table->seconds) + " s, table in " + (o.out / "speed.json").string()
+              : speed.why_not)
+      << "\n";
   out << "  report: " << (o.out / "index.html").string() << " ("
       << (plots.empty() ? "no plots: see plots.log" : std::to_string(plots.size()) + " plots")
       << ")\n";

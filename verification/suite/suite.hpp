@@ -18,6 +18,7 @@ struct SuiteOptions {
   std::filesystem::path out;         ///< where the report goes (out/report)
   bool quick = false;                ///< short runs only: what ctest runs
   bool long_runs = false;            ///< the long runs at 1e6 steps (hours): `verify --long`
+  int speed_repetitions = 3;         ///< runs per workload and engine in the speed section (≥ 1)
   std::ostream* progress = nullptr;  ///< a line per scene and stage
 };
 

@@ -1,0 +1,55 @@
+#include "verification/bench/figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "verification/bench/bench_engine.hpp"
+
+namespace gp::bench {
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2.0;
+}
+
+double sample_stddev(const std::vector<double>& v) {
+  if (v.size() < 2) return 0.0;
+  double mean = 0.0;
+  for (double x : v) mean += x;
+  mean /= static_cast<double>(v.size());
+  double squares = 0.0;
+  for (double x : v) squares += (x - mean) * (x - mean);
+  return std::sqrt(squares / static_cast<double>(v.size() - 1));
+}
+
+}  // namespace
+
+Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
+                   double moved_m) {
+  Figures f{w.name, std::move(engine), ms.size()};
+  f.median_ms = median(ms);
+  f.min_ms = *std::min_element(ms.begin(), ms.end());
+  f.max_ms = *std::max_element(ms.begin(), ms.end());
+  f.stddev_ms = sample_stddev(ms);
+  f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
+  f.moved_m = moved_m;
+  return f;
+}
+
+std::optional<double> ours_over_engine(const std::vector<Figures>& all, const Figures& f) {
+  for (const Figures& ours : all) {
+    if (ours.workload == f.workload && ours.engine == engine_label(Engine::Ours)) {
+      return ours.median_ms / f.median_ms;
+    }
+  }
+  return std::nullopt;
+}
+
+double body_steps_per_s(const Workload& w, double ms) {
+  return static_cast<double>(w.scene.bodies.size()) * w.steps / (ms / 1e3);
+}
+
+}  // namespace gp::bench

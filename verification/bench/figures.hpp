@@ -1,0 +1,37 @@
+#pragma once
+// The figures of one workload in one engine from the wall times of its repetitions: what the
+// summary of gamephysics_bench and the speed section of `gamephysics verify` both report.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "verification/bench/workloads.hpp"
+
+namespace gp::bench {
+
+/// Median, min, max and sample standard deviation of the wall time [ms] of one workload in one
+/// engine, the body-steps per second of the median run and the watched body's displacement [m].
+struct Figures {
+  std::string workload;
+  std::string engine;
+  std::size_t repetitions = 0;
+  double median_ms = 0.0, min_ms = 0.0, max_ms = 0.0, stddev_ms = 0.0;
+  double body_steps_per_s = 0.0;
+  double moved_m = -1.0;  ///< negative when the workload watches no body
+};
+
+/// The figures of the repetitions of `w` in `engine` that took `ms` (not empty) each.
+Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
+                   double moved_m);
+
+/// Our median of f's workload over f's median (above 1: ours is slower; 1 on our own row), absent
+/// when `all` has no figures of ours for that workload.
+std::optional<double> ours_over_engine(const std::vector<Figures>& all, const Figures& f);
+
+/// Bodies (static ones included, as every engine steps them) times steps, per second of a run of
+/// `w` that took `ms`.
+double body_steps_per_s(const Workload& w, double ms);
+
+}  // namespace gp::bench

@@ -1,0 +1,21 @@
+#pragma once
+// One whole run of a workload in one engine, timed alike for Google Benchmark
+// (gamephysics_bench) and for the speed section of `gamephysics verify`.
+
+#include "verification/bench/bench_engine.hpp"
+#include "verification/bench/workloads.hpp"
+
+namespace gp::bench {
+
+struct TimedRun {
+  /// Wall-clock time of the `steps` steps; building and destroying the scene are left out, as
+  /// they are not what a game pays per frame.
+  double seconds = 0.0;
+  double moved_m = -1.0;  ///< the watched body's displacement; negative when none is watched
+};
+
+/// Sets `w` up in `engine`, steps it `w.steps` times by w.scene.dt and times the steps. Throws
+/// what the engine throws (NumericalError when a state becomes non-finite).
+TimedRun time_run(const Workload& w, Engine engine);
+
+}  // namespace gp::bench
