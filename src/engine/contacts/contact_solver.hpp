@@ -120,7 +120,7 @@ class RotationCache {
   }
   /// `v` (body axes) turned by `angle` [rad], the current angle of `body`, into world axes.
   Vec2 rotate(BodyId body, double angle, const Vec2& v) {
-    if (v == Vec2::Zero()) return v;  // a disc's centre: no trigonometry
+    if (v.x() == 0.0 && v.y() == 0.0) return v;  // a disc's centre: no trigonometry
     if (angle_[body] != angle) {
       angle_[body] = angle;
       rotation_[body] = Transform(Vec2::Zero(), angle);

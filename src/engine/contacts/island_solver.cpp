@@ -42,11 +42,16 @@ void find_islands(const std::vector<Contact>& contacts, const BodyInertia& inert
   std::iota(scratch.parent.begin(), scratch.parent.end(), BodyId{0});
   for (const Contact& c : contacts) {
     if (movable(inertia, c.body_a) && movable(inertia, c.body_b)) {
-      scratch.parent[root_of(scratch.parent, c.body_a)] = root_of(scratch.parent, c.body_b);
+      const BodyId a = root_of(scratch.parent, c.body_a);
+      const BodyId b = root_of(scratch.parent, c.body_b);
+      scratch.parent[std::max(a, b)] = std::min(a, b);
     }
   }
+  // Every body pointing at its root: an island is then one look-up away. A root is the
+  // island's lowest body id, so roots come before their bodies in this loop.
+  for (BodyId b = 0; b < bodies; ++b) scratch.parent[b] = scratch.parent[scratch.parent[b]];
   const auto root = [&](const Contact& c) {
-    return root_of(scratch.parent, movable(inertia, c.body_a) ? c.body_a : c.body_b);
+    return scratch.parent[movable(inertia, c.body_a) ? c.body_a : c.body_b];
   };
   scratch.points.assign(bodies, 0);
   scratch.island_start.assign(bodies, 0);
