@@ -150,8 +150,8 @@ bool Space::local_step(double h) {
   start_ = state_;
   const Ballistic motion = start_motion();
   const std::vector<ProxyPair>& pairs = sweep(h, motion);
-  detection_.find_contacts(pairs, shapes_, world_start_, start_, previous_contacts_,
-                           warm_start_scale(h), contacts_);
+  detection_.find_contacts(pairs, shapes_, world_start_, start_, warm_starts_, warm_start_scale(h),
+                           contacts_);
   local_impacts_.classify(pairs, world_start_, world_end_, motion, h,
                           impacts_this_step_ < settings_.max_impacts_per_step, contacts_);
   local_impacts_.hand_over(world_start_, start_, h, contacts_, speculative_contacts_);
@@ -184,7 +184,7 @@ double Space::substep(double h) {
         });
       }
     }
-    detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, previous_contacts_,
+    detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, warm_starts_,
                              warm_start_scale(h), contacts_);
   }
   advance(h);
@@ -224,8 +224,7 @@ void Space::advance(double h) {
                       state_, rotations_);
   }
   time_ += h;
-  std::swap(previous_contacts_, contacts_);
-  contacts_.clear();
+  keep_impulses(contacts_, warm_starts_);
   previous_h_ = h;
 }
 

@@ -6,7 +6,7 @@
 
 #include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
-#include "engine/geometry/world_shape.hpp"
+#include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
 
@@ -35,10 +35,11 @@ class BodyShapes {
   Range of_body(BodyId body) const;
 
   /// Places every moving shape by its body's state (static shapes once, on the first call).
-  void place(const MotionState& s, std::vector<WorldShape>& world) const;
+  void place(const MotionState& s, WorldShapes& world) const;
 
  private:
   std::vector<ShapeRecord> records_;
+  std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 
