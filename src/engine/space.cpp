@@ -53,8 +53,8 @@ BodyId Space::add_body(const BodyDef& def) {
   }
   if (def.type == BodyType::Kinematic) kinematic_.push_back(id);
   for (const ShapeDef& s : def.shapes) {
-    shapes_.add({id, translated(s.shape, -mass.local_center), s.restitution, s.friction,
-                 def.type != BodyType::Static});
+    shapes_.add(id, translated(s.shape, -mass.local_center), s.restitution, s.friction,
+                def.type != BodyType::Static);
   }
   if (!def.shapes.empty()) {
     ++bodies_with_shapes_;

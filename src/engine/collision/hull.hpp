@@ -8,7 +8,6 @@
 #include <variant>
 
 #include "engine/geometry/shape.hpp"
-#include "engine/geometry/world_shape.hpp"
 
 namespace gp {
 
@@ -40,7 +39,7 @@ class SegmentOutline {
 /// Calls `visit` with a polygon's or a segment's geometry (not a circle's) seen as a Hull, which
 /// lives only for the call.
 template <typename Visit>
-auto visit_as_hull(const WorldGeometryView& geometry, Visit&& visit) {
+auto visit_as_hull(const GeometryView& geometry, Visit&& visit) {
   if (const auto* polygon = std::get_if<PolygonView>(&geometry)) return visit(hull_of(*polygon));
   const SegmentOutline outline(*std::get_if<Segment>(&geometry));
   return visit(outline.hull());

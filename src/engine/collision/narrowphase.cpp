@@ -178,7 +178,7 @@ ContactManifold collide_hulls(const Hull& a, const Hull& b, double margin) {
                         : clip(a, edge_a, b, edge_b, false, margin);
 }
 
-bool is_bare_line(const WorldGeometryView& geometry) {
+bool is_bare_line(const GeometryView& geometry) {
   const auto* segment = std::get_if<Segment>(&geometry);
   return segment != nullptr && segment->radius == 0.0;
 }

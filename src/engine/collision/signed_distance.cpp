@@ -72,7 +72,7 @@ double signed_distance(const WorldShapeView& a, const WorldShapeView& b) {
   }
   if (circle_a != nullptr || circle_b != nullptr) {
     const Circle& circle = circle_a != nullptr ? *circle_a : *circle_b;
-    const WorldGeometryView& other = circle_a != nullptr ? b.geometry : a.geometry;
+    const GeometryView& other = circle_a != nullptr ? b.geometry : a.geometry;
     return visit_as_hull(other, [&](const Hull& hull) {
       return core_distance(circle.center, hull) - circle.radius - hull.radius;
     });

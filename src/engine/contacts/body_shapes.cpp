@@ -1,17 +1,25 @@
 #include "engine/contacts/body_shapes.hpp"
 
+#include <algorithm>
 #include <variant>
 
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
 
-void BodyShapes::add(ShapeRecord record) {
-  while (first_.size() <= record.body) first_.push_back(static_cast<std::uint32_t>(size()));
-  if (const auto* polygon = std::get_if<ConvexPolygon>(&record.local.geometry())) {
-    polygon_vertices_ += static_cast<std::size_t>(polygon->count);
+void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
+                     bool moves) {
+  while (first_.size() <= body) first_.push_back(static_cast<std::uint32_t>(size()));
+  GeometryView kept = view_of(local.geometry());
+  if (const auto* polygon = std::get_if<PolygonView>(&kept)) {
+    const std::size_t count = polygon->vertices.size();
+    auto& block = polygons_.emplace_back(std::make_unique<Vec2[]>(2 * count));
+    std::copy(polygon->vertices.begin(), polygon->vertices.end(), block.get());
+    std::copy(polygon->normals.begin(), polygon->normals.end(), block.get() + count);
+    kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
+    polygon_vertices_ += count;
   }
-  records_.push_back(std::move(record));
+  records_.push_back({kept, body, moves, restitution, friction});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {

@@ -15,8 +15,9 @@ namespace {
 
 // Where shape `shape` of a body at `frame` reaches deepest into the other shape, as an anchor in
 // the body's frame plus a radius along the normal away from the shape (see ContactPointState).
-std::pair<Vec2, double> anchor(const Shape& shape, const Transform& frame, const Vec2& deepest) {
-  if (const auto* circle = std::get_if<Circle>(&shape.geometry())) {
+std::pair<Vec2, double> anchor(const GeometryView& shape, const Transform& frame,
+                               const Vec2& deepest) {
+  if (const auto* circle = std::get_if<Circle>(&shape)) {
     return {circle->center, circle->radius};
   }
   return {frame.unrotate(deepest - frame.position()), 0.0};
@@ -61,8 +62,8 @@ Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const Cont
             std::sqrt(a.friction * b.friction)};
   // A disc's anchor needs no frame: spare its trigonometry.
   const auto frame_of = [&s](const ShapeRecord& r) {
-    return r.local.kind() == ShapeKind::kCircle ? Transform()
-                                                : Transform(s.position[r.body], s.angle[r.body]);
+    return kind_of(r.local) == ShapeKind::kCircle ? Transform()
+                                                  : Transform(s.position[r.body], s.angle[r.body]);
   };
   const Transform frame_a = frame_of(a);
   const Transform frame_b = frame_of(b);

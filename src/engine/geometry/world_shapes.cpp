@@ -11,14 +11,14 @@ void WorldShapes::lay_out(std::size_t count, std::size_t polygon_vertices) {
   pool_.reserve(2 * polygon_vertices);
 }
 
-void WorldShapes::place(std::size_t i, const Shape& shape, const Transform& transform) {
-  const auto* polygon = std::get_if<ConvexPolygon>(&shape.geometry());
+void WorldShapes::place(std::size_t i, const GeometryView& local, const Transform& transform) {
+  const auto* polygon = std::get_if<PolygonView>(&local);
   if (polygon == nullptr) {
     // A disc or a segment is copied into its view: nothing refers to the temporary.
-    shapes_[i] = WorldShapeView(to_world(shape, transform));
+    shapes_[i] = WorldShapeView(to_world(local, transform));
     return;
   }
-  const auto count = static_cast<std::size_t>(polygon->count);
+  const std::size_t count = polygon->vertices.size();
   Vec2* room = nullptr;
   if (const auto* placed = std::get_if<PolygonView>(&shapes_[i].geometry)) {
     room = pool_.data() + (placed->vertices.data() - pool_.data());

@@ -23,9 +23,9 @@ class WorldShapes {
   /// Forgets every placement, so that the shapes are laid out again.
   void clear() { shapes_.clear(); }
 
-  /// Places shape `i`, `shape` moved into the world by `transform`. A polygon keeps the room it
-  /// was first given, and so must keep its vertex count.
-  void place(std::size_t i, const Shape& shape, const Transform& transform);
+  /// Places shape `i`, `local` (body frame) moved into the world by `transform`. A polygon keeps
+  /// the room it was first given, and so must keep its vertex count.
+  void place(std::size_t i, const GeometryView& local, const Transform& transform);
 
   std::size_t size() const { return shapes_.size(); }
   const WorldShapeView& operator[](std::size_t i) const { return shapes_[i]; }
