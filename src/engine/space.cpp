@@ -118,18 +118,19 @@ void Space::move_kinematic(double h) {
 }
 
 const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
-  shapes_.place(start_, world_start_);
+  shapes_.place(start_.position, start_.angle, world_start_);
   // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
-  ballistic_end_ = start_;
+  end_position_ = start_.position;
+  end_angle_ = start_.angle;
   for (BodyId j : forces_.bodies()) {
-    ballistic_end_.position[j] = motion.position(j, h);
-    ballistic_end_.angle[j] = motion.angle(j, h);
+    end_position_[j] = motion.position(j, h);
+    end_angle_[j] = motion.angle(j, h);
   }
   for (BodyId k : kinematic_) {
-    ballistic_end_.position[k] = start_.position[k] + h * start_.velocity[k];
-    ballistic_end_.angle[k] = start_.angle[k] + h * start_.angular_velocity[k];
+    end_position_[k] = start_.position[k] + h * start_.velocity[k];
+    end_angle_[k] = start_.angle[k] + h * start_.angular_velocity[k];
   }
-  shapes_.place(ballistic_end_, world_end_);
+  shapes_.place(end_position_, end_angle_, world_end_);
   return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
 }
 

@@ -29,13 +29,14 @@ BodyShapes::Range BodyShapes::of_body(BodyId body) const {
   return {first, last};
 }
 
-void BodyShapes::place(const MotionState& s, WorldShapes& world) const {
+void BodyShapes::place(std::span<const Vec2> position, std::span<const double> angle,
+                       WorldShapes& world) const {
   const bool first = world.size() != records_.size();
   if (first) world.lay_out(records_.size(), polygon_vertices_);
   for (std::size_t i = 0; i < records_.size(); ++i) {
     const ShapeRecord& r = records_[i];
     if (!r.moves && !first) continue;
-    world.place(i, r.local, Transform(s.position[r.body], s.angle[r.body]));
+    world.place(i, r.local, Transform(position[r.body], angle[r.body]));
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "engine/body.hpp"
@@ -37,8 +38,10 @@ class BodyShapes {
   };
   Range of_body(BodyId body) const;
 
-  /// Places every moving shape by its body's state (static shapes once, on the first call).
-  void place(const MotionState& s, WorldShapes& world) const;
+  /// Places every moving shape by its body's centre of mass `position` and orientation `angle`,
+  /// indexed by body id (static shapes once, on the first call).
+  void place(std::span<const Vec2> position, std::span<const double> angle,
+             WorldShapes& world) const;
 
  private:
   std::vector<ShapeRecord> records_;
