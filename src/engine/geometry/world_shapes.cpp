@@ -21,6 +21,7 @@ void WorldShapes::place(std::size_t i, const GeometryView& local, const Transfor
   const std::size_t count = polygon->vertices.size();
   Vec2* room = nullptr;
   if (const auto* placed = std::get_if<PolygonView>(&shapes_[i].geometry)) {
+    // The room it was first given, reached through the pool: its view only reads.
     room = pool_.data() + (placed->vertices.data() - pool_.data());
   } else {
     if (pool_.size() + 2 * count > pool_.capacity()) {
