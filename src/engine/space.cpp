@@ -53,8 +53,8 @@ BodyId Space::add_body(const BodyDef& def) {
   }
   if (def.type == BodyType::Kinematic) kinematic_.push_back(id);
   for (const ShapeDef& s : def.shapes) {
-    shapes_.add({id, translated(s.shape, -mass.local_center), s.restitution, s.friction,
-                 def.type != BodyType::Static});
+    shapes_.add(id, translated(s.shape, -mass.local_center), s.restitution, s.friction,
+                def.type != BodyType::Static);
   }
   if (!def.shapes.empty()) {
     ++bodies_with_shapes_;
@@ -118,18 +118,19 @@ void Space::move_kinematic(double h) {
 }
 
 const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
-  shapes_.place(start_, world_start_);
+  shapes_.place(start_.position, start_.angle, world_start_);
   // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
-  ballistic_end_ = start_;
+  end_position_ = start_.position;
+  end_angle_ = start_.angle;
   for (BodyId j : forces_.bodies()) {
-    ballistic_end_.position[j] = motion.position(j, h);
-    ballistic_end_.angle[j] = motion.angle(j, h);
+    end_position_[j] = motion.position(j, h);
+    end_angle_[j] = motion.angle(j, h);
   }
   for (BodyId k : kinematic_) {
-    ballistic_end_.position[k] = start_.position[k] + h * start_.velocity[k];
-    ballistic_end_.angle[k] = start_.angle[k] + h * start_.angular_velocity[k];
+    end_position_[k] = start_.position[k] + h * start_.velocity[k];
+    end_angle_[k] = start_.angle[k] + h * start_.angular_velocity[k];
   }
-  shapes_.place(ballistic_end_, world_end_);
+  shapes_.place(end_position_, end_angle_, world_end_);
   return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
 }
 
@@ -150,8 +151,8 @@ bool Space::local_step(double h) {
   start_ = state_;
   const Ballistic motion = start_motion();
   const std::vector<ProxyPair>& pairs = sweep(h, motion);
-  detection_.find_contacts(pairs, shapes_, world_start_, start_, previous_contacts_,
-                           warm_start_scale(h), contacts_);
+  detection_.find_contacts(pairs, shapes_, world_start_, start_, warm_starts_, warm_start_scale(h),
+                           contacts_);
   local_impacts_.classify(pairs, world_start_, world_end_, motion, h,
                           impacts_this_step_ < settings_.max_impacts_per_step, contacts_);
   local_impacts_.hand_over(world_start_, start_, h, contacts_, speculative_contacts_);
@@ -184,7 +185,7 @@ double Space::substep(double h) {
         });
       }
     }
-    detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, previous_contacts_,
+    detection_.find_contacts(contact_pairs_, shapes_, world_start_, start_, warm_starts_,
                              warm_start_scale(h), contacts_);
   }
   advance(h);
@@ -227,8 +228,7 @@ void Space::advance(double h) {
                       state_, rotations_);
   }
   time_ += h;
-  std::swap(previous_contacts_, contacts_);
-  contacts_.clear();
+  keep_impulses(contacts_, warm_starts_);
   previous_h_ = h;
 }
 

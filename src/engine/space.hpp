@@ -14,6 +14,7 @@
 #include "engine/contacts/impacts.hpp"
 #include "engine/contacts/island_solver.hpp"
 #include "engine/contacts/local_impacts.hpp"
+#include "engine/contacts/warm_start.hpp"
 #include "engine/dynamics/force_model.hpp"
 #include "engine/dynamics/integrator.hpp"
 #include "engine/pipeline.hpp"
@@ -58,7 +59,7 @@ class Space {
   /// The impacts resolved at their time of impact during the last step.
   const std::vector<Impact>& impacts() const { return impacts_; }
   /// The contact constraints of the last sub-step, with the impulses the solver accumulated.
-  const std::vector<Contact>& contacts() const { return previous_contacts_; }
+  const std::vector<Contact>& contacts() const { return contacts_; }
 
   /// The space's own models, for a verifier that integrates the same equations another way
   /// (the SUNDIALS oracle): the force model (IM:transMot, IM:rotMot right-hand sides), the shapes
@@ -82,7 +83,7 @@ class Space {
   /// returns the candidate pairs of the boxes swept between.
   const std::vector<ProxyPair>& sweep(double h, const Ballistic& motion);
   /// Integrates over h from state_, then solves contacts_ (and speculative_contacts_) and keeps
-  /// contacts_ for warm starting.
+  /// their impulses for warm starting.
   void advance(double h);
   void move_kinematic(double h);
 
@@ -106,10 +107,14 @@ class Space {
   int impacts_this_step_ = 0;
   double previous_h_ = 0.0;
   // Scratch kept between steps so that a step does not allocate once the scene is warmed up.
-  MotionState start_, ballistic_end_;
+  MotionState start_;
+  // Where the ballistic paths end, for placing the shapes there: no velocities needed.
+  std::vector<Vec2> end_position_;
+  std::vector<double> end_angle_;
   Accelerations start_acceleration_;
-  std::vector<WorldShape> world_start_, world_end_;
-  std::vector<Contact> contacts_, previous_contacts_, impact_scratch_;
+  WorldShapes world_start_, world_end_;
+  std::vector<Contact> contacts_, impact_scratch_;
+  std::vector<WarmStart> warm_starts_;         // the impulses of the last sub-step's contacts
   std::vector<Contact> speculative_contacts_;  // impacts on resting bodies, this step only
   SpeculativeScratch speculative_scratch_;
   IslandScratch island_scratch_;

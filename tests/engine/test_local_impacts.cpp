@@ -2,19 +2,16 @@
 // one step against the closed form, an impact on a body in resting contact left to the solver,
 // and no allocation in a step once a scene is warmed up.
 #include <catch2/catch.hpp>
-#include <cstdlib>
-#include <new>
 
 #include "gamephysics/gamephysics.hpp"
 #include "gamephysics/models/dd/kinetic_energy.hpp"
 #include "gamephysics/models/dd/potential_energy.hpp"
+#include "heap_counter.hpp"
 
 using Catch::Matchers::WithinAbs;
 using gp::Vec2;
 
 namespace {
-
-long allocations = 0;
 
 gp::BodyDef wall(const std::string& name, const Vec2& a, const Vec2& b, double restitution) {
   gp::BodyDef def;
@@ -35,48 +32,6 @@ gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velo
 }
 
 }  // namespace
-
-// Counts every allocation of this test program; the test below reads the count around steps.
-// Every non-aligned form is replaced, so that each block is freed by the allocator that made it
-// (AddressSanitizer checks that).
-namespace {
-void* counted_allocation(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-void* operator new(std::size_t size) {
-  return counted_allocation(size);
-}
-void* operator new[](std::size_t size) {
-  return counted_allocation(size);
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  ++allocations;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept {
-  return operator new(size, tag);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-  std::free(p);
-}
 
 TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form reflections",
           "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
@@ -141,10 +96,10 @@ TEST_CASE("A step allocates nothing once the scene is warmed up", "[FR:Simulatio
                         {0.0, 0.0}, 0.2, 0.5));
   }
   for (int k = 0; k < 600; ++k) space.step(1.0 / 60);
-  const long before = allocations;
+  const long before = gp::test::allocations();
   for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
-  CHECK(allocations - before == 0);
+  CHECK(gp::test::allocations() - before == 0);
   // The count is real: a vector's growth shows in it.
   std::vector<double> grown(1000);
-  CHECK(allocations > before);
+  CHECK(gp::test::allocations() > before);
 }

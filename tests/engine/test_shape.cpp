@@ -9,6 +9,7 @@
 
 #include "engine/geometry/mass_properties.hpp"
 #include "engine/geometry/world_shape.hpp"
+#include "engine/geometry/world_shapes.hpp"
 
 using gp::Shape;
 using gp::Vec2;
@@ -234,4 +235,60 @@ TEST_CASE("A shape placed by a transform has its vertices, normals and bounds mo
     check_near(capsule.bounds.min, {2.75, 3.75});
     check_near(capsule.bounds.max, {3.25, 6.25});
   }
+}
+
+TEST_CASE("A shape made again from a view of its geometry has the same numbers",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Vec2> pentagon{{0.1, -0.3}, {1.7, 0.2}, {1.9, 1.3}, {0.6, 2.1}, {-0.8, 0.9}};
+  const Shape polygon = Shape::polygon(pentagon);
+  const gp::ConvexPolygon again = polygon_of(Shape::copy_of(gp::view_of(polygon.geometry())));
+  REQUIRE(again.count == 5);
+  for (int i = 0; i < 5; ++i) {
+    CHECK(again.vertices[i] == polygon_of(polygon).vertices[i]);
+    CHECK(again.normals[i] == polygon_of(polygon).normals[i]);
+  }
+  const Shape circle = Shape::circle(0.3, {0.1, 0.2});
+  const auto disc = std::get<gp::Circle>(Shape::copy_of(gp::view_of(circle.geometry())).geometry());
+  CHECK(disc.center == Vec2(0.1, 0.2));
+  CHECK(disc.radius == 0.3);
+  const Shape capsule = Shape::segment({0.0, 1.0}, {2.0, 3.0}, 0.1);
+  const auto line =
+      std::get<gp::Segment>(Shape::copy_of(gp::view_of(capsule.geometry())).geometry());
+  CHECK(line.a == Vec2(0.0, 1.0));
+  CHECK(line.b == Vec2(2.0, 3.0));
+  CHECK(line.radius == 0.1);
+}
+
+TEST_CASE("Shapes placed in one pool are placed as one by one, and keep their room",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Shape> shapes{Shape::box(2.0, 1.0, {1.0, 0.0}), Shape::circle(0.5),
+                                  Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}})};
+  const gp::Transform frame({3.0, 4.0}, 0.7);
+  gp::WorldShapes world;
+  world.lay_out(shapes.size(), 7);
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    world.place(i, gp::view_of(shapes[i].geometry()), frame);
+  }
+  const auto* box_room = std::get<gp::PolygonView>(world[0].geometry).vertices.data();
+  world.place(0, gp::view_of(shapes[0].geometry()), gp::Transform({1.0, 1.0}, 0.2));
+  CHECK(std::get<gp::PolygonView>(world[0].geometry).vertices.data() == box_room);
+  world.place(0, gp::view_of(shapes[0].geometry()), frame);
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    const gp::WorldShape alone = gp::to_world(shapes[i], frame);
+    CHECK(world[i].kind() == alone.kind());
+    CHECK(world[i].bounds.min == alone.bounds.min);
+    CHECK(world[i].bounds.max == alone.bounds.max);
+  }
+  const auto& triangle = std::get<gp::PolygonView>(world[2].geometry);
+  const gp::WorldShape alone = gp::to_world(shapes[2], frame);
+  const auto& expected = std::get<gp::ConvexPolygon>(alone.geometry);
+  REQUIRE(triangle.vertices.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(triangle.vertices[i] == expected.vertices[i]);
+    CHECK(triangle.normals[i] == expected.normals[i]);
+  }
+  // More polygon vertices than laid out would move the pool under the views already given.
+  gp::WorldShapes small;
+  small.lay_out(1, 3);
+  CHECK_THROWS_AS(small.place(0, gp::view_of(shapes[0].geometry()), frame), std::logic_error);
 }

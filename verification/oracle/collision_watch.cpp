@@ -8,11 +8,11 @@
 
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
+#include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/transform.hpp"
 #include "gamephysics/models/dd/chasles_theorem.hpp"
 #include "gamephysics/models/dd/relative_velocity.hpp"
 #include "gamephysics/models/im/collision_response.hpp"
-#include "engine/geometry/shape_extent.hpp"
 
 namespace gp::verification {
 
@@ -99,7 +99,7 @@ double CollisionWatch::acceleration_bound(std::size_t shape, const Accelerations
 }
 
 double CollisionWatch::horizon(const MotionState& s, const Accelerations& a) {
-  space_.shapes().place(s, world_);
+  space_.shapes().place(s.position, s.angle, world_);
   double shortest = std::numeric_limits<double>::infinity();
   for (const Pair& p : pairs_) {
     const double speed = speed_bound(p.a, s) + speed_bound(p.b, s);
@@ -115,7 +115,7 @@ double CollisionWatch::horizon(const MotionState& s, const Accelerations& a) {
 }
 
 void CollisionWatch::distances(const MotionState& s, double* g) {
-  space_.shapes().place(s, world_);
+  space_.shapes().place(s.position, s.angle, world_);
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     g[k] = signed_distance(world_[pairs_[k].a], world_[pairs_[k].b]);
   }

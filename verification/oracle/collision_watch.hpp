@@ -74,8 +74,8 @@ class CollisionWatch {
   const Space& space_;
   double tolerance_;
   std::vector<Pair> pairs_;
-  std::vector<double> reach_;      // m, per shape
-  std::vector<WorldShape> world_;  // scratch for distances()
+  std::vector<double> reach_;  // m, per shape
+  WorldShapes world_;          // scratch for distances()
 };
 
 }  // namespace gp::verification

@@ -31,7 +31,7 @@ PeerScene peer_scene(const Scene& scene) {
   const BodyShapes& shapes = space->shapes();
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const ShapeRecord& r = shapes[i];
-    peer.bodies[r.body].shapes.push_back({r.local, r.restitution, r.friction});
+    peer.bodies[r.body].shapes.push_back({Shape::copy_of(r.local), r.restitution, r.friction});
   }
   return peer;
 }

@@ -66,7 +66,7 @@ json bodies_json(const Space& space) {
   // The shapes in their body's frame centred on the centre of mass, as the engine holds them.
   const BodyShapes& shapes = space.shapes();
   for (std::size_t i = 0; i < shapes.size(); ++i) {
-    json shape = shape_json(shapes[i].local);
+    json shape = shape_json(Shape::copy_of(shapes[i].local));
     shape["restitution"] = shapes[i].restitution;
     shape["friction"] = shapes[i].friction;
     bodies[shapes[i].body]["shapes"].push_back(shape);

@@ -5,9 +5,8 @@
 
 namespace gp {
 
-Hull hull_of(const ConvexPolygon& polygon) {
-  const auto count = static_cast<std::size_t>(polygon.count);
-  return {std::span(polygon.vertices).first(count), std::span(polygon.normals).first(count), 0.0};
+Hull hull_of(const PolygonView& polygon) {
+  return {polygon.vertices, polygon.normals, 0.0};
 }
 
 SegmentOutline::SegmentOutline(const Segment& segment)

@@ -22,7 +22,7 @@ struct Hull {
   int next(int index) const { return index + 1 == count() ? 0 : index + 1; }
 };
 
-Hull hull_of(const ConvexPolygon& polygon);
+Hull hull_of(const PolygonView& polygon);
 
 /// A segment as the two edges a→b and b→a; holds the storage its Hull views.
 class SegmentOutline {
@@ -39,8 +39,8 @@ class SegmentOutline {
 /// Calls `visit` with a polygon's or a segment's geometry (not a circle's) seen as a Hull, which
 /// lives only for the call.
 template <typename Visit>
-auto visit_as_hull(const ShapeGeometry& geometry, Visit&& visit) {
-  if (const auto* polygon = std::get_if<ConvexPolygon>(&geometry)) return visit(hull_of(*polygon));
+auto visit_as_hull(const GeometryView& geometry, Visit&& visit) {
+  if (const auto* polygon = std::get_if<PolygonView>(&geometry)) return visit(hull_of(*polygon));
   const SegmentOutline outline(*std::get_if<Segment>(&geometry));
   return visit(outline.hull());
 }

@@ -178,14 +178,14 @@ ContactManifold collide_hulls(const Hull& a, const Hull& b, double margin) {
                         : clip(a, edge_a, b, edge_b, false, margin);
 }
 
-bool is_bare_line(const ShapeGeometry& geometry) {
+bool is_bare_line(const GeometryView& geometry) {
   const auto* segment = std::get_if<Segment>(&geometry);
   return segment != nullptr && segment->radius == 0.0;
 }
 
 }  // namespace
 
-ContactManifold collide(const WorldShape& a, const WorldShape& b, double margin) {
+ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin) {
   const auto* circle_a = std::get_if<Circle>(&a.geometry);
   const auto* circle_b = std::get_if<Circle>(&b.geometry);
   if (circle_a != nullptr && circle_b != nullptr) {

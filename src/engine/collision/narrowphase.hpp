@@ -18,6 +18,6 @@ inline constexpr double kContactTolerance = 5e-4;
 /// shapes offer a face separating them equally (within kContactTolerance), where the reference
 /// face is taken from a: call with the same order every frame for stable feature ids.
 /// Does not allocate.
-ContactManifold collide(const WorldShape& a, const WorldShape& b, double margin);
+ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin);
 
 }  // namespace gp

@@ -64,7 +64,7 @@ double core_distance(const Hull& a, const Hull& b) {
 
 }  // namespace
 
-double signed_distance(const WorldShape& a, const WorldShape& b) {
+double signed_distance(const WorldShapeView& a, const WorldShapeView& b) {
   const auto* circle_a = std::get_if<Circle>(&a.geometry);
   const auto* circle_b = std::get_if<Circle>(&b.geometry);
   if (circle_a != nullptr && circle_b != nullptr) {
@@ -72,7 +72,7 @@ double signed_distance(const WorldShape& a, const WorldShape& b) {
   }
   if (circle_a != nullptr || circle_b != nullptr) {
     const Circle& circle = circle_a != nullptr ? *circle_a : *circle_b;
-    const ShapeGeometry& other = circle_a != nullptr ? b.geometry : a.geometry;
+    const GeometryView& other = circle_a != nullptr ? b.geometry : a.geometry;
     return visit_as_hull(other, [&](const Hull& hull) {
       return core_distance(circle.center, hull) - circle.radius - hull.radius;
     });

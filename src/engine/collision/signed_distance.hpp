@@ -11,6 +11,6 @@ namespace gp {
 /// they overlap. Symmetric in a and b; continuous, and changes no faster than either shape moves
 /// (1-Lipschitz in its position). Two segments of radius 0 that cross have distance 0 or the
 /// negative of the shorter way out along either's normal. Does not allocate.
-double signed_distance(const WorldShape& a, const WorldShape& b);
+double signed_distance(const WorldShapeView& a, const WorldShapeView& b);
 
 }  // namespace gp

@@ -1,12 +1,25 @@
 #include "engine/contacts/body_shapes.hpp"
 
+#include <algorithm>
+#include <variant>
+
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
 
-void BodyShapes::add(ShapeRecord record) {
-  while (first_.size() <= record.body) first_.push_back(static_cast<std::uint32_t>(size()));
-  records_.push_back(std::move(record));
+void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
+                     bool moves) {
+  while (first_.size() <= body) first_.push_back(static_cast<std::uint32_t>(size()));
+  GeometryView kept = view_of(local.geometry());
+  if (const auto* polygon = std::get_if<PolygonView>(&kept)) {
+    const std::size_t count = polygon->vertices.size();
+    auto& block = polygons_.emplace_back(std::make_unique<Vec2[]>(2 * count));
+    std::copy(polygon->vertices.begin(), polygon->vertices.end(), block.get());
+    std::copy(polygon->normals.begin(), polygon->normals.end(), block.get() + count);
+    kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
+    polygon_vertices_ += count;
+  }
+  records_.push_back({kept, body, moves, restitution, friction});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {
@@ -16,13 +29,14 @@ BodyShapes::Range BodyShapes::of_body(BodyId body) const {
   return {first, last};
 }
 
-void BodyShapes::place(const MotionState& s, std::vector<WorldShape>& world) const {
+void BodyShapes::place(std::span<const Vec2> position, std::span<const double> angle,
+                       WorldShapes& world) const {
   const bool first = world.size() != records_.size();
-  if (first) world.resize(records_.size());
+  if (first) world.lay_out(records_.size(), polygon_vertices_);
   for (std::size_t i = 0; i < records_.size(); ++i) {
     const ShapeRecord& r = records_[i];
     if (!r.moves && !first) continue;
-    world[i] = to_world(r.local, Transform(s.position[r.body], s.angle[r.body]));
+    world.place(i, r.local, Transform(position[r.body], angle[r.body]));
   }
 }
 

@@ -2,28 +2,32 @@
 // Every shape of the space with its body and surface, and where each is in the world.
 
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
-#include "engine/geometry/world_shape.hpp"
+#include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
 
-/// A shape of a body, in the body frame centred on the centre of mass.
+/// A shape of a body, in the body frame centred on the centre of mass; a polygon's vertices are
+/// BodyShapes' to keep.
 struct ShapeRecord {
+  GeometryView local;
   BodyId body;
-  Shape local;
+  bool moves;  ///< false for the shapes of static bodies
   double restitution;
   double friction;
-  bool moves;  ///< false for the shapes of static bodies
 };
 
 /// The shapes of a space, and their world placement for a given motion state.
 class BodyShapes {
  public:
-  /// Adds a shape; shapes are added body by body, in increasing body order.
-  void add(ShapeRecord record);
+  /// Adds shape `local` of `body` with its surface; shapes are added body by body, in increasing
+  /// body order.
+  void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
 
@@ -34,11 +38,17 @@ class BodyShapes {
   };
   Range of_body(BodyId body) const;
 
-  /// Places every moving shape by its body's state (static shapes once, on the first call).
-  void place(const MotionState& s, std::vector<WorldShape>& world) const;
+  /// Places every moving shape by its body's centre of mass `position` and orientation `angle`,
+  /// indexed by body id (static shapes once, on the first call).
+  void place(std::span<const Vec2> position, std::span<const double> angle,
+             WorldShapes& world) const;
 
  private:
   std::vector<ShapeRecord> records_;
+  // Per polygon, its vertices then its normals: a block each, which stays where it is as shapes
+  // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
+  std::vector<std::unique_ptr<Vec2[]>> polygons_;
+  std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 

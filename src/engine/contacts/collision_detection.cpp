@@ -5,6 +5,7 @@
 #include <tuple>
 #include <utility>
 
+#include "engine/capacity.hpp"
 #include "engine/collision/narrowphase.hpp"
 #include "engine/geometry/transform.hpp"
 
@@ -14,8 +15,9 @@ namespace {
 
 // Where shape `shape` of a body at `frame` reaches deepest into the other shape, as an anchor in
 // the body's frame plus a radius along the normal away from the shape (see ContactPointState).
-std::pair<Vec2, double> anchor(const Shape& shape, const Transform& frame, const Vec2& deepest) {
-  if (const auto* circle = std::get_if<Circle>(&shape.geometry())) {
+std::pair<Vec2, double> anchor(const GeometryView& shape, const Transform& frame,
+                               const Vec2& deepest) {
+  if (const auto* circle = std::get_if<Circle>(&shape)) {
     return {circle->center, circle->radius};
   }
   return {frame.unrotate(deepest - frame.position()), 0.0};
@@ -23,9 +25,10 @@ std::pair<Vec2, double> anchor(const Shape& shape, const Transform& frame, const
 
 }  // namespace
 
-const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
-    const BodyShapes& shapes, const std::vector<char>& dynamic,
-    const std::vector<WorldShape>& start, const std::vector<WorldShape>& end) {
+const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShapes& shapes,
+                                                                  const std::vector<char>& dynamic,
+                                                                  const WorldShapes& start,
+                                                                  const WorldShapes& end) {
   proxies_.resize(shapes.size());
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
     proxies_[i] = {i, start[i].bounds.united(end[i].bounds), !dynamic[shapes[i].body]};
@@ -60,8 +63,8 @@ Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const Cont
             {}};
   // A disc's anchor needs no frame: spare its trigonometry.
   const auto frame_of = [&s](const ShapeRecord& r) {
-    return r.local.kind() == ShapeKind::kCircle ? Transform()
-                                                : Transform(s.position[r.body], s.angle[r.body]);
+    return kind_of(r.local) == ShapeKind::kCircle ? Transform()
+                                                  : Transform(s.position[r.body], s.angle[r.body]);
   };
   const Transform frame_a = frame_of(a);
   const Transform frame_b = frame_of(b);
@@ -83,24 +86,25 @@ Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const Cont
 }
 
 void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
-                                       const BodyShapes& shapes,
-                                       const std::vector<WorldShape>& world, const MotionState& s,
-                                       const std::vector<Contact>& previous, double impulse_scale,
-                                       std::vector<Contact>& contacts) const {
+                                       const BodyShapes& shapes, const WorldShapes& world,
+                                       const MotionState& s, const std::vector<WarmStart>& previous,
+                                       double impulse_scale, std::vector<Contact>& contacts) const {
   contacts.clear();
+  // A pair makes one contact at most.
+  reserve_for(contacts, pairs.size());
   auto old = previous.begin();
   for (const ProxyPair& p : pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);
     if (m.count == 0) continue;
     Contact c = make_contact(p, shapes, m, s);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
-    while (old != previous.end() && old->key() < c.key()) ++old;
-    if (old != previous.end() && old->key() == c.key()) {
+    while (old != previous.end() && old->key < c.key()) ++old;
+    if (old != previous.end() && old->key == c.key()) {
       for (int k = 0; k < c.count; ++k) {
         for (int j = 0; j < old->count; ++j) {
           if (old->points[j].id == c.points[k].id) {
-            c.points[k].normal_impulse = impulse_scale * old->points[j].normal_impulse;
-            c.points[k].tangent_impulse = impulse_scale * old->points[j].tangent_impulse;
+            c.points[k].normal_impulse = impulse_scale * old->points[j].normal;
+            c.points[k].tangent_impulse = impulse_scale * old->points[j].tangent;
           }
         }
       }

@@ -8,6 +8,7 @@
 #include "engine/collision/broadphase.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/contact.hpp"
+#include "engine/contacts/warm_start.hpp"
 
 namespace gp {
 
@@ -26,14 +27,14 @@ class CollisionDetection {
   /// when each is grown to cover both its `start` and its `end` placement.
   const std::vector<ProxyPair>& candidate_pairs(const BodyShapes& shapes,
                                                 const std::vector<char>& dynamic,
-                                                const std::vector<WorldShape>& start,
-                                                const std::vector<WorldShape>& end);
+                                                const WorldShapes& start, const WorldShapes& end);
 
   /// The contacts of `pairs` at placement `world` of state `s`, sorted by key; a point whose pair
-  /// and features were in `previous` starts with its impulses times `impulse_scale`.
+  /// and features were in `previous` (sorted by key) starts with its impulses times
+  /// `impulse_scale`.
   void find_contacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
-                     const std::vector<WorldShape>& world, const MotionState& s,
-                     const std::vector<Contact>& previous, double impulse_scale,
+                     const WorldShapes& world, const MotionState& s,
+                     const std::vector<WarmStart>& previous, double impulse_scale,
                      std::vector<Contact>& contacts) const;
 
   double margin() const { return margin_; }

@@ -91,8 +91,9 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
 
 }  // namespace
 
-std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b, const WorldShape& a0,
-                                  const WorldShape& b0, const WorldShape& a1, const WorldShape& b1,
+std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b,
+                                  const WorldShapeView& a0, const WorldShapeView& b0,
+                                  const WorldShapeView& a1, const WorldShapeView& b1,
                                   const Ballistic& motion, double t0, double h,
                                   const ImpactFilter& filter) {
   const double d0 = signed_distance(a0, b0);
@@ -103,11 +104,9 @@ std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b, co
 }
 
 std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs,
-                                             const BodyShapes& shapes,
-                                             const std::vector<WorldShape>& start,
-                                             const std::vector<WorldShape>& end,
-                                             const Ballistic& motion, double h,
-                                             const ImpactFilter& filter) {
+                                             const BodyShapes& shapes, const WorldShapes& start,
+                                             const WorldShapes& end, const Ballistic& motion,
+                                             double h, const ImpactFilter& filter) {
   touching_.clear();
   std::optional<double> best;
   const double same_time = simultaneity(h);

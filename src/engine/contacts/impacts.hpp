@@ -59,8 +59,9 @@ inline ImpactFilter impact_filter(const Settings& settings) {
 /// `filter.margin` that close slower than `filter.min_speed` over the rest of the step are left
 /// to the contact solver's speculative contacts, as they bounce no more than resting contacts
 /// (restitution threshold). `a0`, `b0` and `a1`, `b1` are the shapes placed at τ = t0 and τ = h.
-std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b, const WorldShape& a0,
-                                  const WorldShape& b0, const WorldShape& a1, const WorldShape& b1,
+std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b,
+                                  const WorldShapeView& a0, const WorldShapeView& b0,
+                                  const WorldShapeView& a1, const WorldShapeView& b1,
                                   const Ballistic& motion, double t0, double h,
                                   const ImpactFilter& filter);
 
@@ -74,9 +75,8 @@ class ImpactSearch {
   /// The earliest impact_time() from τ = 0 of any of `pairs`, nothing if none. `start` and
   /// `end` are the shapes placed at τ = 0 and at τ = h along `motion`.
   std::optional<double> earliest(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
-                                 const std::vector<WorldShape>& start,
-                                 const std::vector<WorldShape>& end, const Ballistic& motion,
-                                 double h, const ImpactFilter& filter);
+                                 const WorldShapes& start, const WorldShapes& end,
+                                 const Ballistic& motion, double h, const ImpactFilter& filter);
 
   /// The pairs found touching at the earliest time by the last call to earliest().
   const std::vector<ProxyPair>& touching() const { return touching_; }

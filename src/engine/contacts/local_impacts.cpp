@@ -9,10 +9,9 @@
 
 namespace gp {
 
-void LocalImpacts::classify(const std::vector<ProxyPair>& pairs,
-                            const std::vector<WorldShape>& start,
-                            const std::vector<WorldShape>& end, const Ballistic& motion, double h,
-                            bool search, std::vector<Contact>& contacts) {
+void LocalImpacts::classify(const std::vector<ProxyPair>& pairs, const WorldShapes& start,
+                            const WorldShapes& end, const Ballistic& motion, double h, bool search,
+                            std::vector<Contact>& contacts) {
   pending_.clear();
   if (!search) return;
   const ImpactFilter f = impact_filter(settings_);
@@ -52,7 +51,7 @@ bool LocalImpacts::engaged(const Contact& c, const MotionState& s, double h) con
   return false;
 }
 
-void LocalImpacts::hand_over(const std::vector<WorldShape>& start, const MotionState& s, double h,
+void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, double h,
                              std::vector<Contact>& contacts, std::vector<Contact>& speculative) {
   in_solver_.assign(dynamic_.size(), 0);
   const auto join = [this](BodyId b) {
@@ -68,8 +67,8 @@ void LocalImpacts::hand_over(const std::vector<WorldShape>& start, const MotionS
     grew = false;
     std::erase_if(pending_, [&](const Pending& e) {
       if (!in_solver(e.pair.first) && !in_solver(e.pair.second)) return false;
-      const WorldShape& a = start[e.pair.first];
-      const WorldShape& b = start[e.pair.second];
+      const WorldShapeView& a = start[e.pair.first];
+      const WorldShapeView& b = start[e.pair.second];
       // A margin that reaches the other shape, so that the solver holds the gap closed.
       const ContactManifold m = collide(a, b, signed_distance(a, b) + settings_.contact_margin);
       if (m.count > 0) speculative.push_back(make_contact(e.pair, shapes_, m, s));
@@ -106,9 +105,8 @@ void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
 }
 
 bool LocalImpacts::resolve(double t, double h, MotionState& start,
-                           const Accelerations& acceleration,
-                           const std::vector<WorldShape>& world_start, std::vector<WorldShape>& end,
-                           int& impacts, std::vector<Impact>& log) {
+                           const Accelerations& acceleration, const WorldShapes& world_start,
+                           WorldShapes& end, int& impacts, std::vector<Impact>& log) {
   if (pending_.empty()) return true;
   const Ballistic motion{start, acceleration};
   const double half_margin = 0.5 * settings_.contact_margin;
@@ -156,17 +154,20 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
 }
 
 bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, double h,
-                                const Ballistic& motion, std::vector<WorldShape>& end) {
-  const auto placed_at = [&](std::uint32_t i, double when) {
+                                const Ballistic& motion, WorldShapes& end) {
+  const auto frame_at = [&](std::uint32_t i, double when) {
     const BodyId b = shapes_[i].body;
-    return to_world(shapes_[i].local, Transform(motion.position(b, when), motion.angle(b, when)));
+    return Transform(motion.position(b, when), motion.angle(b, when));
+  };
+  const auto placed_at = [&](std::uint32_t i, double when) {
+    return to_world(shapes_[i].local, frame_at(i, when));
   };
   const double half_margin = 0.5 * settings_.contact_margin;
   // First every changed shape's new box, so that two changed shapes see each other's.
   here_.clear();
   for (BodyId b : changed) {
     for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
-      end[i] = placed_at(i, h);
+      end.place(i, shapes_[i].local, frame_at(i, h));
       here_.push_back(placed_at(i, tau));
       swept_[i] = here_.back().bounds.united(end[i].bounds).fattened(half_margin);
     }

@@ -28,8 +28,8 @@ class LocalImpacts {
   /// the candidate `pairs` that are apart at the start and touch within the step (only when
   /// `search`, i.e. impacts are still allowed this step). Their speculative contacts leave
   /// `contacts` (the contacts of `pairs`; both sorted by pair), as the impacts take their place.
-  void classify(const std::vector<ProxyPair>& pairs, const std::vector<WorldShape>& start,
-                const std::vector<WorldShape>& end, const Ballistic& motion, double h, bool search,
+  void classify(const std::vector<ProxyPair>& pairs, const WorldShapes& start,
+                const WorldShapes& end, const Ballistic& motion, double h, bool search,
                 std::vector<Contact>& contacts);
 
   /// Pending impacts on bodies that take part in `contacts` become `speculative` contacts
@@ -37,7 +37,7 @@ class LocalImpacts {
   /// thereby added, until no pending impact touches a body of the contact solver; a body takes part
   /// when one of its contacts is engaged over the step of h [s]. The other contacts of bodies left
   /// with impacts are dropped: the impacts' own search covers them.
-  void hand_over(const std::vector<WorldShape>& start, const MotionState& s, double h,
+  void hand_over(const WorldShapes& start, const MotionState& s, double h,
                  std::vector<Contact>& contacts, std::vector<Contact>& speculative);
 
   /// Resolves the remaining impacts in time order, each at its t_c = t + τ, and logs them in
@@ -47,8 +47,8 @@ class LocalImpacts {
   /// step, in `end`, follows. Returns false, leaving the step to be sub-stepped, when a changed
   /// path could carry a body through one of the contact solver's bodies within the step.
   bool resolve(double t, double h, MotionState& start, const Accelerations& acceleration,
-               const std::vector<WorldShape>& world_start, std::vector<WorldShape>& end,
-               int& impacts, std::vector<Impact>& log);
+               const WorldShapes& world_start, WorldShapes& end, int& impacts,
+               std::vector<Impact>& log);
 
  private:
   struct Pending {
@@ -67,7 +67,7 @@ class LocalImpacts {
   /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed;
   /// false when one of them could pass through a body of the contact solver.
   bool search_after(std::span<const BodyId> changed, double tau, double h, const Ballistic& motion,
-                    std::vector<WorldShape>& end);
+                    WorldShapes& end);
 
   const BodyShapes& shapes_;
   const BodyInertia& inertia_;

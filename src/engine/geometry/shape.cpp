@@ -138,6 +138,27 @@ Shape Shape::box(double width, double height, const Vec2& center) {
   return polygon(corners);
 }
 
+Shape Shape::copy_of(const GeometryView& geometry) {
+  if (const auto* circle = std::get_if<Circle>(&geometry)) {
+    return Shape::circle(circle->radius, circle->center);
+  }
+  if (const auto* polygon = std::get_if<PolygonView>(&geometry)) {
+    return Shape::polygon(polygon->vertices);
+  }
+  const auto& segment = std::get<Segment>(geometry);
+  return Shape::segment(segment.a, segment.b, segment.radius);
+}
+
+GeometryView view_of(const ShapeGeometry& geometry) {
+  if (const auto* polygon = std::get_if<ConvexPolygon>(&geometry)) {
+    const auto count = static_cast<std::size_t>(polygon->count);
+    return PolygonView{std::span(polygon->vertices).first(count),
+                       std::span(polygon->normals).first(count)};
+  }
+  if (const auto* circle = std::get_if<Circle>(&geometry)) return *circle;
+  return std::get<Segment>(geometry);
+}
+
 Shape Shape::segment(const Vec2& a, const Vec2& b, double radius) {
   require_finite(a, "segment end a");
   require_finite(b, "segment end b");

@@ -47,6 +47,24 @@ inline ShapeKind kind_of(const ShapeGeometry& geometry) {
   return static_cast<ShapeKind>(geometry.index());
 }
 
+/// A convex polygon's vertices and outward edge normals (m, as in ConvexPolygon), viewed where
+/// they are stored.
+struct PolygonView {
+  std::span<const Vec2> vertices;
+  std::span<const Vec2> normals;
+};
+
+/// A ShapeGeometry whose polygon is viewed instead of held: a quarter of its size, and what the
+/// engine keeps per shape. The alternatives are in the same order.
+using GeometryView = std::variant<Circle, PolygonView, Segment>;
+
+inline ShapeKind kind_of(const GeometryView& geometry) {
+  return static_cast<ShapeKind>(geometry.index());
+}
+
+/// Views `geometry`, which must outlive the view (as a std::string does its std::string_view).
+GeometryView view_of(const ShapeGeometry& geometry);
+
 /// A validated shape in its body's frame. Every factory throws std::invalid_argument, naming the
 /// rule broken and the offending value, for non-finite numbers or a degenerate shape.
 class Shape {
@@ -65,6 +83,10 @@ class Shape {
 
   /// Segment from `a` to `b` (m, finite, distinct) with rounding `radius` (m, finite, ≥ 0).
   static Shape segment(const Vec2& a, const Vec2& b, double radius = 0.0);
+
+  /// The shape that `geometry`, a view of a Shape's geometry, shows: made again by its kind's
+  /// factory, which gives back the same numbers.
+  static Shape copy_of(const GeometryView& geometry);
 
   ShapeKind kind() const { return kind_of(geometry_); }
   const ShapeGeometry& geometry() const { return geometry_; }

@@ -12,18 +12,12 @@ WorldShape place(const Circle& circle, const Transform& transform) {
   return {Circle{center, circle.radius}, Aabb{center - extent, center + extent}};
 }
 
-WorldShape place(const ConvexPolygon& polygon, const Transform& transform) {
+WorldShape place(const PolygonView& polygon, const Transform& transform) {
   ConvexPolygon placed{};
-  placed.count = polygon.count;
-  for (int i = 0; i < polygon.count; ++i) {
-    placed.vertices[i] = transform.apply(polygon.vertices[i]);
-    placed.normals[i] = transform.rotate(polygon.normals[i]);
-  }
-  Aabb bounds{placed.vertices[0], placed.vertices[0]};
-  for (int i = 1; i < placed.count; ++i) {
-    bounds.min = bounds.min.cwiseMin(placed.vertices[i]);
-    bounds.max = bounds.max.cwiseMax(placed.vertices[i]);
-  }
+  placed.count = static_cast<int>(polygon.vertices.size());
+  const Aabb bounds =
+      place_polygon(polygon, transform, std::span(placed.vertices).first(polygon.vertices.size()),
+                    std::span(placed.normals).first(polygon.vertices.size()));
   return {placed, bounds};
 }
 
@@ -36,9 +30,23 @@ WorldShape place(const Segment& segment, const Transform& transform) {
 
 }  // namespace
 
-WorldShape to_world(const Shape& shape, const Transform& transform) {
-  return std::visit([&](const auto& geometry) { return place(geometry, transform); },
-                    shape.geometry());
+WorldShape to_world(const GeometryView& local, const Transform& transform) {
+  return std::visit([&](const auto& geometry) { return place(geometry, transform); }, local);
+}
+
+Aabb place_polygon(const PolygonView& polygon, const Transform& transform, std::span<Vec2> vertices,
+                   std::span<Vec2> normals) {
+  const std::size_t count = polygon.vertices.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    vertices[i] = transform.apply(polygon.vertices[i]);
+    normals[i] = transform.rotate(polygon.normals[i]);
+  }
+  Aabb bounds{vertices[0], vertices[0]};
+  for (std::size_t i = 1; i < count; ++i) {
+    bounds.min = bounds.min.cwiseMin(vertices[i]);
+    bounds.max = bounds.max.cwiseMax(vertices[i]);
+  }
+  return bounds;
 }
 
 }  // namespace gp

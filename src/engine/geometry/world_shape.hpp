@@ -1,6 +1,8 @@
 #pragma once
 // A shape placed in the world by its body's transform: what collision detection works on.
 
+#include <span>
+
 #include "engine/geometry/aabb.hpp"
 #include "engine/geometry/shape.hpp"
 #include "engine/geometry/transform.hpp"
@@ -16,7 +18,30 @@ struct WorldShape {
   ShapeKind kind() const { return kind_of(geometry); }
 };
 
-/// `shape` moved from its body's frame into the world by the body's `transform`.
-WorldShape to_world(const Shape& shape, const Transform& transform);
+/// A WorldShape whose polygon, if it is one, is stored elsewhere: what the narrowphase reads.
+struct WorldShapeView {
+  GeometryView geometry;
+  Aabb bounds;
+
+  WorldShapeView() = default;
+  WorldShapeView(const GeometryView& placed, const Aabb& box) : geometry(placed), bounds(box) {}
+  /// Views `shape`, which must outlive the view (as a std::string does its std::string_view).
+  WorldShapeView(const WorldShape& shape)  // NOLINT(google-explicit-constructor)
+      : geometry(view_of(shape.geometry)), bounds(shape.bounds) {}
+
+  ShapeKind kind() const { return kind_of(geometry); }
+};
+
+/// The shape `local` (body frame) moved into the world by its body's `transform`.
+WorldShape to_world(const GeometryView& local, const Transform& transform);
+
+inline WorldShape to_world(const Shape& shape, const Transform& transform) {
+  return to_world(view_of(shape.geometry()), transform);
+}
+
+/// Writes `polygon` moved into the world by `transform` to `vertices` and `normals` (as many as
+/// the polygon's) and returns its bounding box.
+Aabb place_polygon(const PolygonView& polygon, const Transform& transform, std::span<Vec2> vertices,
+                   std::span<Vec2> normals);
 
 }  // namespace gp

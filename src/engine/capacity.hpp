@@ -1,0 +1,17 @@
+#pragma once
+// How the engine's per-step buffers grow: close to the largest count they have held, rather than
+// up to twice it as a std::vector grows by itself, and seldom, so that a count creeping up step
+// after step does not reallocate (and fragment the heap) at every new high.
+
+#include <cstddef>
+#include <vector>
+
+namespace gp {
+
+/// Makes room in `buffer` for `count` elements, and a quarter more when it must grow.
+template <typename T>
+void reserve_for(std::vector<T>& buffer, std::size_t count) {
+  if (buffer.capacity() < count) buffer.reserve(count + count / 4);
+}
+
+}  // namespace gp
