@@ -40,7 +40,7 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
   }
   // Sorted pairs make the order of the solver, and so the result, independent of the
   // broadphase's internal order.
-  std::sort(pairs_.begin(), pairs_.end());
+  pair_order_.sort(pairs_, static_cast<std::uint32_t>(shapes.size()));
   return pairs_;
 }
 

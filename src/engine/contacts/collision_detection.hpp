@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/collision/broadphase.hpp"
+#include "engine/collision/pair_order.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/contact.hpp"
 
@@ -41,6 +42,7 @@ class CollisionDetection {
  private:
   double margin_;
   SweepAndPrune broadphase_;
+  PairOrder pair_order_;
   std::vector<BroadphaseProxy> proxies_;
   std::vector<ProxyPair> pairs_;
 };
