@@ -44,6 +44,7 @@ class CollisionDetection {
   SweepAndPrune broadphase_;
   PairOrder pair_order_;
   std::vector<BroadphaseProxy> proxies_;
+  std::vector<BodyId> body_of_;  // per shape
   std::vector<ProxyPair> pairs_;
 };
 
