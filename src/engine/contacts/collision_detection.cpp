@@ -47,19 +47,21 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(
   return pairs_;
 }
 
-Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                     const MotionState& s) {
+Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                        const MotionState& s, std::vector<Contact>& contacts) {
   const ShapeRecord& a = shapes[pair.first];
   const ShapeRecord& b = shapes[pair.second];
-  Contact c{pair.first,
-            pair.second,
-            a.body,
-            b.body,
-            m.normal,
-            m.count,
-            {},
-            std::max(a.restitution, b.restitution),
-            std::sqrt(a.friction * b.friction)};
+  // Built in place: a contact built apart and then copied in is read back right after being
+  // written, and the copy's wide loads stall on the narrower stores that wrote it.
+  Contact& c = contacts.emplace_back();
+  c.shape_a = pair.first;
+  c.shape_b = pair.second;
+  c.body_a = a.body;
+  c.body_b = b.body;
+  c.normal = m.normal;
+  c.count = m.count;
+  c.restitution = std::max(a.restitution, b.restitution);
+  c.friction = std::sqrt(a.friction * b.friction);
   // A disc's anchor needs no frame: spare its trigonometry.
   const auto frame_of = [&s](const ShapeRecord& r) {
     return r.local.kind() == ShapeKind::kCircle ? Transform()
@@ -94,10 +96,11 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
   for (const ProxyPair& p : pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);
     if (m.count == 0) continue;
-    Contact c = make_contact(p, shapes, m, s);
+    Contact& c = append_contact(p, shapes, m, s, contacts);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
-    while (old != previous.end() && old->key() < c.key()) ++old;
-    if (old != previous.end() && old->key() == c.key()) {
+    const std::uint64_t key = key_of(p);
+    while (old != previous.end() && old->key() < key) ++old;
+    if (old != previous.end() && old->key() == key) {
       for (int k = 0; k < c.count; ++k) {
         for (int j = 0; j < old->count; ++j) {
           if (old->points[j].id == c.points[k].id) {
@@ -107,7 +110,6 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
         }
       }
     }
-    contacts.push_back(c);
   }
 }
 

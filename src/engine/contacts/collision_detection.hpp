@@ -12,11 +12,11 @@
 
 namespace gp {
 
-/// The contact constraint of the shapes of `pair`, whose manifold `m` was found in state `s`:
-/// combined surface properties, and per point its depth, arms and the anchors that measure the
-/// overlap again after the bodies move. Impulses start at 0.
-Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                     const MotionState& s);
+/// Appends to `contacts` the contact constraint of the shapes of `pair`, whose manifold `m` was
+/// found in state `s`: combined surface properties, and per point its depth, arms and the anchors
+/// that measure the overlap again after the bodies move. Impulses start at 0.
+Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                        const MotionState& s, std::vector<Contact>& contacts);
 
 class CollisionDetection {
  public:
