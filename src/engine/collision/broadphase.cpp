@@ -149,13 +149,17 @@ void SweepAndPrune::sort_entries() {
 }
 
 void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies) {
-  for (std::size_t i = 0; i < entries_.size(); ++i) {
-    const Entry& entry = entries_[i];
+  // The entries and the count in locals: pairs_ growing might, for all the compiler knows, change
+  // the members, which it would then reload at every candidate.
+  const std::span<const Entry> entries(entries_);
+  std::size_t tested = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const Entry& entry = entries[i];
     for (std::size_t j = i + 1;
-         j < entries_.size() && entries_[j].band == entry.band && entries_[j].left <= entry.right;
+         j < entries.size() && entries[j].band == entry.band && entries[j].left <= entry.right;
          ++j) {
-      const Entry& other = entries_[j];
-      ++candidates_tested_;
+      const Entry& other = entries[j];
+      ++tested;
       if (entry.is_static && other.is_static) continue;
       if (other.bottom > entry.top || entry.bottom > other.top) continue;
       if (!entry.is_bottom && !other.is_bottom) continue;
@@ -164,6 +168,7 @@ void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies) {
       pairs_.push_back({std::min(a, b), std::max(a, b)});
     }
   }
+  candidates_tested_ = tested;
 }
 
 void SweepAndPrune::forget() {
