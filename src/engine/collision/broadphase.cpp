@@ -53,20 +53,40 @@ double SweepAndPrune::ideal_band_height(std::span<const BroadphaseProxy> proxies
 
 void SweepAndPrune::place_bands(std::span<const BroadphaseProxy> proxies, double lowest,
                                 double highest) {
-  const double ideal = ideal_band_height(proxies, highest - lowest);
-  // Moving the bands moves nearly every entry, which then has to be sorted afresh; bands within a
-  // factor of two of the ideal height cost little more to sweep. They must still start at or
-  // below the lowest bottom, and hold the bottoms in at most about 2N bands.
-  const double count = static_cast<double>(proxies.size());
-  if (band_height_ >= 0.5 * ideal && band_height_ <= 2.0 * ideal && lowest >= band_origin_ &&
-      highest - band_origin_ <= 2.0 * count * band_height_) {
-    return;
-  }
+  if (bands_suit(proxies, lowest, highest)) return;
   forget();
   // Bands start at the lowest grown bottom. Bands above the highest bottom hold no overlap's
   // bottom, so no box needs entries there.
   band_origin_ = lowest;
-  band_height_ = ideal;
+  band_height_ = ideal_band_height(proxies, highest - lowest);
+}
+
+bool SweepAndPrune::bands_suit(std::span<const BroadphaseProxy> proxies, double lowest,
+                               double highest) const {
+  // Moving the bands moves nearly every entry, which then has to be sorted afresh; bands within a
+  // factor of two of the ideal height cost little more to sweep. They must still start at or
+  // below the lowest bottom, and hold the bottoms in at most about 2N bands.
+  const double h = band_height_;
+  const double count = static_cast<double>(proxies.size());
+  if (!(h > 0.0) || lowest < band_origin_ || highest - band_origin_ > 2.0 * count * h) {
+    return false;
+  }
+  // The ideal is max(2m, range / N) for the median height m: h ≥ ideal / 2 when h ≥ m and
+  // h ≥ range / 2N, and h ≤ 2 · ideal when h ≤ 4m or h ≤ 2 · range / N. Counting the boxes no
+  // taller than h and those shorter than h / 4 places m against both without finding it.
+  const double range = highest - lowest;
+  if (h < range / (2.0 * count)) return false;
+  std::size_t up_to_h = 0;
+  std::size_t below_quarter_h = 0;
+  for (const BroadphaseProxy& proxy : proxies) {
+    const double height = proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_;
+    up_to_h += height <= h;
+    below_quarter_h += height < 0.25 * h;
+  }
+  // m is the height of rank N / 2 (from 0): m ≤ h when more than N / 2 boxes are no taller than
+  // h, and m ≥ h / 4 when at most N / 2 are shorter than h / 4.
+  const std::size_t median_rank = proxies.size() / 2;
+  return up_to_h > median_rank && (h <= 2.0 * range / count || below_quarter_h <= median_rank);
 }
 
 void SweepAndPrune::update_entries(std::span<const BroadphaseProxy> proxies, double highest) {

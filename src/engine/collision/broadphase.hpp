@@ -90,6 +90,9 @@ class SweepAndPrune {
   /// Keeps the bands of the last call when they still suit boxes whose grown bottoms span
   /// [lowest, highest] (m); else places them anew and forgets the entries.
   void place_bands(std::span<const BroadphaseProxy> proxies, double lowest, double highest);
+  /// Whether the bands of the last call still suit those boxes: a height within a factor of two
+  /// of ideal_band_height, found in O(N) without the median's copy and selection.
+  bool bands_suit(std::span<const BroadphaseProxy> proxies, double lowest, double highest) const;
   std::int64_t band_of(double y) const {
     // A top far above the bottoms (up to the largest double, over a height that may itself be
     // infinite) lies in a band past the last one that matters: clamped, NaN included, so that the
