@@ -108,6 +108,7 @@ class SweepAndPrune {
   /// Restores the order of the entries kept from the last call, then merges in those added.
   void sort_entries();
   void sweep(std::span<const BroadphaseProxy> proxies);
+  /// Drops the entries and the bands: the next call places and sorts them from scratch.
   void forget();
 
   double half_margin_;
