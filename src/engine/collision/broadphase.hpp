@@ -32,6 +32,12 @@ struct ProxyPair {
 /// boxes high and sweeping each band on its own keeps that to a few per box: O(N log N + K) for
 /// the sort and the K pairs found. A box spanning several bands is swept in each, and a pair is
 /// reported only from the band holding the bottom of its overlap, so exactly once.
+///
+/// Bodies move little from one step to the next, so the entries are kept sorted between calls
+/// and only repaired: the bands stay put while they still suit the boxes, an entry stays in its
+/// band while its box still spans it, and an insertion sort restores the order along x in
+/// O(N + moves). The moves are bounded: past O(N log N) of them the entries are sorted afresh,
+/// so that a scene shuffled between calls costs no more than a rebuild.
 class SweepAndPrune {
  public:
   /// `margin` (m, ≥ 0): boxes up to this far apart are paired too, so that the narrowphase can
@@ -41,12 +47,16 @@ class SweepAndPrune {
   /// The pairs of `proxies` whose boxes, each grown by margin / 2 on every side, overlap
   /// (touching counts), except static with static; each pair once, in no particular order. The
   /// result lives until the next call. Allocates nothing once its buffers have grown to the
-  /// scene.
+  /// scene. Fastest when each proxy keeps its position in `proxies` from call to call.
   const std::vector<ProxyPair>& find_pairs(std::span<const BroadphaseProxy> proxies);
 
   /// How many pairs of band entries the last call compared, those found plus those rejected:
   /// the measure of its cost.
   std::size_t candidates_tested() const { return candidates_tested_; }
+
+  /// How many entries the last call sorted from scratch, rather than repaired from the order of
+  /// the call before: the measure of how well the incremental update works.
+  std::size_t entries_resorted() const { return entries_resorted_; }
 
  private:
   /// A proxy's grown box, in one of the bands it spans.
@@ -56,14 +66,33 @@ class SweepAndPrune {
     double right;
     double bottom;
     double top;
-    std::uint32_t id;
+    std::uint32_t proxy;  ///< index in the proxies of the call
     bool is_static;
+    /// The band holds the box's bottom. The bottom of an overlap is the higher of the two
+    /// bottoms, so the band holds it when it holds either box's bottom.
+    bool is_bottom;
+
+    bool operator<(const Entry& other) const {
+      return band != other.band ? band < other.band : left < other.left;
+    }
+  };
+
+  /// The bands [first, last] a proxy's entries are in; none when first > last.
+  struct BandRange {
+    std::int64_t first;
+    std::int64_t last;
   };
 
   /// Twice the median box height (m), widened when needed so that there are at most about N
   /// bands across `bottoms_range` (m), the spread of the boxes' bottoms: a single huge box then
   /// cannot make more entries than there are proxies.
-  double choose_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range);
+  double ideal_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range);
+  /// Keeps the bands of the last call when they still suit boxes whose grown bottoms span
+  /// [lowest, highest] (m); else places them anew and forgets the entries.
+  void place_bands(std::span<const BroadphaseProxy> proxies, double lowest, double highest);
+  /// Whether the bands of the last call still suit those boxes: a height within a factor of two
+  /// of ideal_band_height, found in O(N) without the median's copy and selection.
+  bool bands_suit(std::span<const BroadphaseProxy> proxies, double lowest, double highest) const;
   std::int64_t band_of(double y) const {
     // A top far above the bottoms (up to the largest double, over a height that may itself be
     // infinite) lies in a band past the last one that matters: clamped, NaN included, so that the
@@ -72,14 +101,26 @@ class SweepAndPrune {
     const double band = (y - band_origin_) / band_height_;
     return static_cast<std::int64_t>(band < kBeyondAnyBand ? band : kBeyondAnyBand);
   }
-  void sweep();
+  /// Brings the entries of the last call to `proxies`, whose highest grown bottom is `highest`
+  /// (m): drops those whose box left their band, refreshes the others, adds those of the bands
+  /// newly spanned, and sorts them again.
+  void update_entries(std::span<const BroadphaseProxy> proxies, double highest);
+  /// Restores the order of the entries kept from the last call, then merges in those added.
+  void sort_entries();
+  void sweep(std::span<const BroadphaseProxy> proxies);
+  /// Drops the entries and the bands: the next call places and sorts them from scratch.
+  void forget();
 
   double half_margin_;
-  double band_origin_ = 0.0;  // m: the lowest grown box bottom
-  double band_height_ = 1.0;  // m
+  double band_origin_ = 0.0;  // m: at or below the lowest grown box bottom
+  double band_height_ = 0.0;  // m; 0 while no bands are placed
   std::size_t candidates_tested_ = 0;
-  std::vector<double> heights_;  // scratch for the median
-  std::vector<Entry> entries_;
+  std::size_t entries_resorted_ = 0;
+  std::vector<double> heights_;       // scratch for the median
+  std::vector<BandRange> bands_;      // per proxy of the last call
+  std::vector<BandRange> new_bands_;  // per proxy of this call
+  std::vector<Entry> entries_;        // sorted by band, then left, between calls
+  std::vector<Entry> added_;          // scratch: entries of bands newly spanned
   std::vector<ProxyPair> pairs_;
 };
 

@@ -30,37 +30,41 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
                                                                   const WorldShapes& start,
                                                                   const WorldShapes& end) {
   proxies_.resize(shapes.size());
+  // The shapes' bodies side by side: the pairs below look them up at random, and a whole shape
+  // record per look-up costs a cache miss each in a large scene.
+  body_of_.resize(shapes.size());
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
-    proxies_[i] = {i, start[i].bounds.united(end[i].bounds), !dynamic[shapes[i].body]};
+    body_of_[i] = shapes[i].body;
+    // A static proxy is one whose body collisions cannot move: the broadphase pairs no two.
+    proxies_[i] = {i, start[i].bounds.united(end[i].bounds), !dynamic[body_of_[i]]};
   }
   const auto& found = broadphase_.find_pairs(proxies_);
   pairs_.clear();
   for (const ProxyPair& p : found) {
-    // Two parts of one body never collide; a pair needs a body that collisions can move.
-    if (shapes[p.first].body == shapes[p.second].body) continue;
-    if (!dynamic[shapes[p.first].body] && !dynamic[shapes[p.second].body]) continue;
-    pairs_.push_back(p);
+    // Two parts of one body never collide.
+    if (body_of_[p.first] != body_of_[p.second]) pairs_.push_back(p);
   }
   // Sorted pairs make the order of the solver, and so the result, independent of the
   // broadphase's internal order.
-  std::sort(pairs_.begin(), pairs_.end());
+  pair_order_.sort(pairs_, static_cast<std::uint32_t>(shapes.size()));
   return pairs_;
 }
 
-Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                     const MotionState& s) {
+Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                        const MotionState& s, std::vector<Contact>& contacts) {
   const ShapeRecord& a = shapes[pair.first];
   const ShapeRecord& b = shapes[pair.second];
-  Contact c{pair.first,
-            pair.second,
-            a.body,
-            b.body,
-            m.normal,
-            m.count,
-            {},
-            std::max(a.restitution, b.restitution),
-            std::sqrt(a.friction * b.friction),
-            {}};
+  // Built in place: a contact built apart and then copied in is read back right after being
+  // written, and the copy's wide loads stall on the narrower stores that wrote it.
+  Contact& c = contacts.emplace_back();
+  c.shape_a = pair.first;
+  c.shape_b = pair.second;
+  c.body_a = a.body;
+  c.body_b = b.body;
+  c.normal = m.normal;
+  c.count = m.count;
+  c.restitution = std::max(a.restitution, b.restitution);
+  c.friction = std::sqrt(a.friction * b.friction);
   // A disc's anchor needs no frame: spare its trigonometry.
   const auto frame_of = [&s](const ShapeRecord& r) {
     return kind_of(r.local) == ShapeKind::kCircle ? Transform()
@@ -96,10 +100,11 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
   for (const ProxyPair& p : pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);
     if (m.count == 0) continue;
-    Contact c = make_contact(p, shapes, m, s);
+    Contact& c = append_contact(p, shapes, m, s, contacts);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
-    while (old != previous.end() && old->key < c.key()) ++old;
-    if (old != previous.end() && old->key == c.key()) {
+    const std::uint64_t key = key_of(p);
+    while (old != previous.end() && old->key < key) ++old;
+    if (old != previous.end() && old->key == key) {
       for (int k = 0; k < c.count; ++k) {
         for (int j = 0; j < old->count; ++j) {
           if (old->points[j].id == c.points[k].id) {
@@ -109,7 +114,6 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
         }
       }
     }
-    contacts.push_back(c);
   }
 }
 

@@ -6,17 +6,18 @@
 #include <vector>
 
 #include "engine/collision/broadphase.hpp"
+#include "engine/collision/pair_order.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/contact.hpp"
 #include "engine/contacts/warm_start.hpp"
 
 namespace gp {
 
-/// The contact constraint of the shapes of `pair`, whose manifold `m` was found in state `s`:
-/// combined surface properties, and per point its depth, arms and the anchors that measure the
-/// overlap again after the bodies move. Impulses start at 0.
-Contact make_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                     const MotionState& s);
+/// Appends to `contacts` the contact constraint of the shapes of `pair`, whose manifold `m` was
+/// found in state `s`: combined surface properties, and per point its depth, arms and the anchors
+/// that measure the overlap again after the bodies move. Impulses start at 0.
+Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                        const MotionState& s, std::vector<Contact>& contacts);
 
 class CollisionDetection {
  public:
@@ -42,7 +43,9 @@ class CollisionDetection {
  private:
   double margin_;
   SweepAndPrune broadphase_;
+  PairOrder pair_order_;
   std::vector<BroadphaseProxy> proxies_;
+  std::vector<BodyId> body_of_;  // per shape
   std::vector<ProxyPair> pairs_;
 };
 

@@ -135,8 +135,7 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
         to_world(a.local, Transform(s.position[a.body], s.angle[a.body])),
         to_world(b.local, Transform(s.position[b.body], s.angle[b.body])), settings.contact_margin);
     if (m.count == 0) continue;
-    const Contact c = make_contact(p, shapes, m, s);
-    contacts.push_back(c);
+    append_contact(p, shapes, m, s, contacts);
   }
   const auto approach = [&s](const Contact& c, const ContactPointState& p) {
     return contact_relative_velocity(s, c, p).dot(c.normal);

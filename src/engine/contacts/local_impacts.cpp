@@ -71,7 +71,7 @@ void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, dou
       const WorldShapeView& b = start[e.pair.second];
       // A margin that reaches the other shape, so that the solver holds the gap closed.
       const ContactManifold m = collide(a, b, signed_distance(a, b) + settings_.contact_margin);
-      if (m.count > 0) speculative.push_back(make_contact(e.pair, shapes_, m, s));
+      if (m.count > 0) append_contact(e.pair, shapes_, m, s, speculative);
       join(shapes_[e.pair.first].body);
       join(shapes_[e.pair.second].body);
       grew = true;
