@@ -36,7 +36,11 @@ void BodyShapes::place(std::span<const Vec2> position, std::span<const double> a
   for (std::size_t i = 0; i < records_.size(); ++i) {
     const ShapeRecord& r = records_[i];
     if (!r.moves && !first) continue;
-    world.place(i, r.local, Transform(position[r.body], angle[r.body]));
+    const auto* disc = std::get_if<Circle>(&r.local);
+    const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
+    world.place(i, r.local,
+                turning_moves_it ? Transform(position[r.body], angle[r.body])
+                                 : Transform(position[r.body]));
   }
 }
 

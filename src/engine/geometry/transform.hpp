@@ -14,6 +14,9 @@ class Transform {
  public:
   /// The identity.
   Transform() = default;
+  /// A translation to `position` (m) alone, without trigonometry: enough for a shape that turning
+  /// leaves in place (a disc about its centre).
+  explicit Transform(const Vec2& position) : position_(position) {}
   Transform(const Vec2& position, double angle)
       : position_(position), angle_(angle), cos_(std::cos(angle)), sin_(std::sin(angle)) {}
 
