@@ -15,25 +15,12 @@ inline std::uint64_t key_of(const ProxyPair& pair) {
   return (std::uint64_t{pair.first} << 32) | pair.second;
 }
 
-/// One point of a contact constraint.
+/// One point of a contact constraint. The fields a solver pass reads come first, so that they
+/// share two cache lines.
 struct ContactPointState {
-  FeatureId id;
-  Vec2 arm_a = Vec2::Zero();  ///< m, from A's centre of mass to the point
-  Vec2 arm_b = Vec2::Zero();  ///< m, from B's centre of mass to the point
-  /// m, in A's frame: A's deepest point is this point plus anchor_radius_a along −normal (a
-  /// circle's centre and radius, so that a disc's turning does not move its deepest point).
-  Vec2 local_anchor_a = Vec2::Zero();
-  /// m, in B's frame: B's deepest point is this point plus anchor_radius_b along +normal.
-  Vec2 local_anchor_b = Vec2::Zero();
-  double anchor_radius_a = 0.0;         ///< m
-  double anchor_radius_b = 0.0;         ///< m
-  double depth = 0.0;                   ///< m, overlap at detection (negative: still apart)
   double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
   double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
   double target_normal_velocity = 0.0;  ///< m/s, what the solver drives v_rel·n to at least
-  /// m/s: v_rel·n before the step when the point was touching and approaching faster than the
-  /// restitution threshold (it then bounces with C_R), else 0.
-  double approach_velocity = 0.0;
   double normal_mass = 0.0;   ///< kg: impulse per unit change of v_rel·n (GD:impulse, C_R = 0)
   double tangent_mass = 0.0;  ///< kg: the same along the tangent
   /// m: the arms crossed with the normal and the tangent, set up once per step. Each is both the
@@ -41,6 +28,20 @@ struct ContactPointState {
   /// angular velocity gives the point, (ω × r)·d = ω (r × d) (DD:chaslesThm).
   double normal_arm_a = 0.0, normal_arm_b = 0.0;
   double tangent_arm_a = 0.0, tangent_arm_b = 0.0;
+  Vec2 arm_a = Vec2::Zero();  ///< m, from A's centre of mass to the point
+  Vec2 arm_b = Vec2::Zero();  ///< m, from B's centre of mass to the point
+  /// m, in A's frame: A's deepest point is this point plus anchor_radius_a along −normal (a
+  /// circle's centre and radius, so that a disc's turning does not move its deepest point).
+  Vec2 local_anchor_a = Vec2::Zero();
+  /// m, in B's frame: B's deepest point is this point plus anchor_radius_b along +normal.
+  Vec2 local_anchor_b = Vec2::Zero();
+  double anchor_radius_a = 0.0;  ///< m
+  double anchor_radius_b = 0.0;  ///< m
+  double depth = 0.0;            ///< m, overlap at detection (negative: still apart)
+  /// m/s: v_rel·n before the step when the point was touching and approaching faster than the
+  /// restitution threshold (it then bounces with C_R), else 0.
+  double approach_velocity = 0.0;
+  FeatureId id;
 };
 
 /// The effective-mass matrix K of a two-point contact's normal constraints [1/kg]: entry (i, j)
@@ -61,9 +62,9 @@ struct Contact {
   BodyId body_b;
   Vec2 normal;  ///< unit, world, from B towards A
   int count;
-  std::array<ContactPointState, 2> points;
   double restitution;  ///< C_R = max of the two shapes'
   double friction;     ///< μ = √(μ_a μ_b)
+  std::array<ContactPointState, 2> points;
   /// Both normal constraints of a two-point contact as one (the block solver's), set up once per
   /// step so that the solver's passes divide nothing.
   NormalBlock block;
