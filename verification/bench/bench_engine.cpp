@@ -42,9 +42,11 @@ std::string EngineRun::describe() const {
   if (peer_) return peer_->describe();
   const Settings& s = ours_->settings();
   std::ostringstream text;
-  text << "GamePhysics (double): " << integrator_name(s.integrator) << ", " << s.velocity_iterations
-       << " velocity and " << s.position_iterations << " position iterations, linear slop "
-       << s.linear_slop << " m, restitution threshold " << s.restitution_threshold << " m/s";
+  text << "GamePhysics (double): " << integrator_name(s.integrator) << ", at most "
+       << s.velocity_iterations << " velocity passes (ending below " << s.velocity_tolerance
+       << " m/s) and " << s.position_iterations << " position passes, islands up to "
+       << s.direct_solve_points << " points solved directly, linear slop " << s.linear_slop
+       << " m, restitution threshold " << s.restitution_threshold << " m/s";
   return text.str();
 }
 
