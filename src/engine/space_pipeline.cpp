@@ -51,10 +51,21 @@ std::vector<PipelineStage> Space::pipeline() const {
                               "bodies as speculative contacts"
                             : "each impact ends a sub-step of the whole space (forces or "
                               "integrator not exact along ballistic paths)"});
+    if (settings_.direct_solve_points > 0) {
+      stages.push_back({"contact solver: small islands solved directly",
+                        "FR:Determine-Collision-Response-Over-Time GD:impulse DD:impulseV "
+                        "TM:NewtonThirdLawMot",
+                        "normal impulses of islands of at most " +
+                            std::to_string(settings_.direct_solve_points) +
+                            " points, all at once (active set)"});
+    }
     stages.push_back({"contact solver: sequential impulses",
                       "FR:Determine-Collision-Response-Over-Time GD:impulse DD:reVeInColl "
                       "DD:chaslesThm DD:impulseV TM:NewtonThirdLawMot",
-                      "resting and persistent contacts, warm started"});
+                      "resting and persistent contacts, warm started; at most " +
+                          std::to_string(settings_.velocity_iterations) +
+                          " passes, ending once a pass changes no velocity by more than the "
+                          "tolerance"});
     stages.push_back({"position correction", "FR:Determine-Collision-Response-Over-Time",
                       "overlap removed by moving positions only"});
   } else {

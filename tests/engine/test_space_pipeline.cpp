@@ -57,6 +57,14 @@ TEST_CASE("Colliding discs and G bring in their stages with their SRS ids",
   const auto gravitation = std::find_if(
       stages.begin(), stages.end(), [](const auto& s) { return s.name == "pairwise gravitation"; });
   CHECK(gravitation->srs_ids == "TM:UniversalGravLaw GD:accelGravity");
+  CHECK(has(stages, "contact solver: small islands solved directly"));
+  // Turned off, the direct solve is not run and not listed.
+  settings.direct_solve_points = 0;
+  gp::Space sequential(settings);
+  sequential.add_body(disc("a", {0, 0}));
+  sequential.add_body(disc("b", {3, 0}));
+  CHECK_FALSE(has(sequential.pipeline(), "contact solver: small islands"));
+  CHECK(has(sequential.pipeline(), "contact solver: sequential impulses"));
 }
 
 TEST_CASE("The same scene gives bit-identical states every run", "[FR:Simulation-Space]") {
