@@ -38,8 +38,8 @@ TEST_CASE("Every shipped scene loads and builds", "[FR:Input-Initial-Conditions]
     CHECK(space->body_count() == scene.bodies.size());
     CHECK(space->body_count() > 0);
   }
-  CHECK(names == std::set<std::string>{"bouncing_ball", "head_on", "newtons_cradle", "oblique",
-                                       "orbit", "projectile", "pyramid20", "rain1000",
+  CHECK(names == std::set<std::string>{"bouncing_ball", "head_on", "heavy_stack", "newtons_cradle",
+                                       "oblique", "orbit", "projectile", "pyramid20", "rain1000",
                                        "spinning_box"});
 }
 

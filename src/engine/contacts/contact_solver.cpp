@@ -318,16 +318,35 @@ void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia
   }
 }
 
+namespace {
+
+// One pass over `c` (solve_contact) on the velocities of `s`; returns the largest change it made
+// to its two bodies' velocities [m/s].
+double solve_once(Contact& c, const BodyInertia& inertia, MotionState& s) {
+  PairMotion m(c, inertia, s);
+  const double change = solve_contact(c, m) * (m.inverse_mass_a + m.inverse_mass_b);
+  m.store(c, s);
+  return change;
+}
+
+// move_by_contact_impulses for one contact.
+void move_by_impulses(const Contact& c, const BodyInertia& inertia, double duration,
+                      MotionState& s) {
+  for (int k = 0; k < c.count; ++k) {
+    const ContactPointState& p = c.points[k];
+    const Vec2 impulse = p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal);
+    displace(inertia, c, p.arm_a, p.arm_b, duration * impulse, s);
+  }
+}
+
+}  // namespace
+
 int solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s) {
   for (int i = 0; i < iterations;) {
     double largest_change = 0.0;
-    for (Contact& c : contacts) {
-      PairMotion m(c, inertia, s);
-      largest_change =
-          std::max(largest_change, solve_contact(c, m) * (m.inverse_mass_a + m.inverse_mass_b));
-      m.store(c, s);
-    }
+    for (Contact& c : contacts)
+      largest_change = std::max(largest_change, solve_once(c, inertia, s));
     ++i;
     // A pass that changed the velocities by at most the tolerance leaves the next about as
     // little to do (none at all when it changed nothing).
@@ -355,13 +374,7 @@ void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inerti
 
 void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s) {
-  for (const Contact& c : contacts) {
-    for (int k = 0; k < c.count; ++k) {
-      const ContactPointState& p = c.points[k];
-      const Vec2 impulse = p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal);
-      displace(inertia, c, p.arm_a, p.arm_b, duration * impulse, s);
-    }
-  }
+  for (const Contact& c : contacts) move_by_impulses(c, inertia, duration, s);
 }
 
 void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& speculative,
@@ -391,21 +404,17 @@ void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& spec
     }
     for (BodyId b : scratch.newly) scratch.reached[b] = 1;
   }
-  scratch.subset.clear();
-  for (std::size_t i : scratch.nearby) scratch.subset.push_back(resting[i]);
   // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
   // impulses so far, and give h × their final impulses at the end.
-  move_by_contact_impulses(scratch.subset, inertia, -h, s);
+  for (std::size_t i : scratch.nearby) move_by_impulses(resting[i], inertia, -h, s);
   prepare_contacts(speculative, inertia, before, h, settings);
-  for (int i = 0; i < settings.velocity_iterations; ++i) {
-    solve_velocities(scratch.subset, inertia, 1, 0.0, s);
-    solve_velocities(speculative, inertia, 1, 0.0, s);
+  for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
+    for (std::size_t i : scratch.nearby) solve_once(resting[i], inertia, s);
+    for (Contact& c : speculative) solve_once(c, inertia, s);
   }
   apply_restitution(speculative, inertia, s);
-  move_by_contact_impulses(scratch.subset, inertia, h, s);
+  for (std::size_t i : scratch.nearby) move_by_impulses(resting[i], inertia, h, s);
   move_by_contact_impulses(speculative, inertia, h, s);
-  for (std::size_t k = 0; k < scratch.nearby.size(); ++k)
-    resting[scratch.nearby[k]] = scratch.subset[k];
 }
 
 void RotationCache::reset(std::size_t bodies) {

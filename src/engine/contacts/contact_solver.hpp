@@ -84,7 +84,6 @@ struct SpeculativeScratch {
   std::vector<char> included;       // per resting contact
   std::vector<std::size_t> nearby;  // resting contacts solved with the impacts
   std::vector<BodyId> newly;
-  std::vector<Contact> subset;
 };
 
 /// Impacts the contact solver takes on after the resting contacts are solved: `speculative`
