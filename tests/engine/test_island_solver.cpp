@@ -2,6 +2,7 @@
 // run to convergence.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,19 +33,25 @@ gp::BodyDef unit_box(const std::string& name, const Vec2& position, double densi
   return box;
 }
 
+// Ten unit boxes on the ground, their densities growing geometrically from 1 to 100 upwards.
+std::unique_ptr<gp::Space> heavy_topped_column(gp::Settings settings) {
+  settings.gravity = {0.0, -kGravity};
+  auto space = std::make_unique<gp::Space>(settings);
+  space->add_body(ground_box());
+  for (int i = 0; i < 10; ++i) {
+    space->add_body(unit_box("box" + std::to_string(i), {0.0, 0.5 + i}, std::pow(100.0, i / 9.0)));
+  }
+  return space;
+}
+
 }  // namespace
 
 TEST_CASE(
     "A column of ten boxes, a hundred times heavier at the top, stands and each contact "
     "carries the weight above it",
     "[FR:Determine-Collision-Response-Over-Time][GD:impulse]") {
-  gp::Settings settings;
-  settings.gravity = {0.0, -kGravity};
-  gp::Space space(settings);
-  space.add_body(ground_box());
-  for (int i = 0; i < 10; ++i) {
-    space.add_body(unit_box("box" + std::to_string(i), {0.0, 0.5 + i}, std::pow(100.0, i / 9.0)));
-  }
+  const auto column = heavy_topped_column({});
+  gp::Space& space = *column;
   for (int k = 0; k < 120; ++k) space.step(kStep);
   for (gp::BodyId id = 1; id <= 10; ++id) {
     CHECK((space.state(id).position - Vec2{0.0, 0.5 + (id - 1)}).norm() < 1e-9);
@@ -59,15 +66,11 @@ TEST_CASE(
     CHECK(carried == Approx(above * kGravity * kStep).epsilon(1e-9));
   }
   // Sequential impulses alone let it lean and topple, which is why the direct solve exists.
-  settings.direct_solve_points = 0;
-  gp::Space sequential(settings);
-  sequential.add_body(ground_box());
-  for (int i = 0; i < 10; ++i) {
-    sequential.add_body(
-        unit_box("box" + std::to_string(i), {0.0, 0.5 + i}, std::pow(100.0, i / 9.0)));
-  }
-  for (int k = 0; k < 600; ++k) sequential.step(kStep);
-  CHECK((sequential.state(10).position - Vec2{0.0, 9.5}).norm() > 0.01);
+  gp::Settings sequential_only;
+  sequential_only.direct_solve_points = 0;
+  const auto sequential = heavy_topped_column(sequential_only);
+  for (int k = 0; k < 600; ++k) sequential->step(kStep);
+  CHECK((sequential->state(10).position - Vec2{0.0, 9.5}).norm() > 0.01);
 }
 
 TEST_CASE("The direct solve finds the velocities that sequential impulses converge to",

@@ -125,6 +125,18 @@ Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const Con
                                  s.velocity[c.body_b], s.angular_velocity[c.body_b], p);
 }
 
+double normal_coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
+                       const ContactPointState& pj, const BodyInertia& m) {
+  const double directions = ci.normal.dot(cj.normal);
+  const auto shared = [&](BodyId bi, double arm_i, BodyId bj, double arm_j) {
+    return bi == bj ? m.inverse_mass[bi] * directions + m.inverse_moment[bi] * arm_i * arm_j : 0.0;
+  };
+  return shared(ci.body_a, pi.normal_arm_a, cj.body_a, pj.normal_arm_a) -
+         shared(ci.body_a, pi.normal_arm_a, cj.body_b, pj.normal_arm_b) -
+         shared(ci.body_b, pi.normal_arm_b, cj.body_a, pj.normal_arm_a) +
+         shared(ci.body_b, pi.normal_arm_b, cj.body_b, pj.normal_arm_b);
+}
+
 double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
   return velocity_along(s.velocity[c.body_a], s.angular_velocity[c.body_a], s.velocity[c.body_b],
                         s.angular_velocity[c.body_b], c.normal, p.normal_arm_a, p.normal_arm_b);
@@ -267,10 +279,7 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c) {
   NormalBlock k;
   k.k11 = 1.0 / p.normal_mass;
   k.k22 = 1.0 / q.normal_mass;
-  // The off-diagonal term: arms of point 0 against arms of point 1.
-  k.k12 = inertia.inverse_mass[c.body_a] + inertia.inverse_mass[c.body_b] +
-          inertia.inverse_moment[c.body_a] * p.normal_arm_a * q.normal_arm_a +
-          inertia.inverse_moment[c.body_b] * p.normal_arm_b * q.normal_arm_b;
+  k.k12 = normal_coupling(c, p, c, q, inertia);
   const double determinant = k.k11 * k.k22 - k.k12 * k.k12;
   // Box2D's bound on K's condition number, past which the block solve amplifies round-off.
   k.solvable = k.k11 * k.k11 < 1000.0 * determinant;

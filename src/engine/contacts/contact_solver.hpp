@@ -26,6 +26,13 @@ struct BodyInertia {
 /// [m/s] (DD:chaslesThm, DD:reVeInColl).
 Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
 
+/// An entry K_ij of the effective-mass matrix of contact points [1/kg]: the change of point i's
+/// v_rel·n per unit normal impulse at point j, summed over the bodies the two points share, A
+/// counting + and B − (GD:impulse's denominator when i = j). Uses the arms that prepare_contacts
+/// set up.
+double normal_coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
+                       const ContactPointState& pj, const BodyInertia& m);
+
 /// v_rel·n at point `p` of `c` in state `s` [m/s], from the arms that prepare_contacts set up.
 double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
 

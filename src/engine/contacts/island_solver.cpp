@@ -19,20 +19,6 @@ bool movable(const BodyInertia& m, BodyId body) {
   return m.inverse_mass[body] > 0.0 || m.inverse_moment[body] > 0.0;
 }
 
-// K_ij: the change of point i's normal velocity per unit normal impulse at point j, summed over
-// the bodies the two points share, A counting + and B − (GD:impulse's denominator when i = j).
-double coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
-                const ContactPointState& pj, const BodyInertia& m) {
-  const double directions = ci.normal.dot(cj.normal);
-  const auto shared = [&](BodyId bi, double arm_i, BodyId bj, double arm_j) {
-    return bi == bj ? m.inverse_mass[bi] * directions + m.inverse_moment[bi] * arm_i * arm_j : 0.0;
-  };
-  return shared(ci.body_a, pi.normal_arm_a, cj.body_a, pj.normal_arm_a) -
-         shared(ci.body_a, pi.normal_arm_a, cj.body_b, pj.normal_arm_b) -
-         shared(ci.body_b, pi.normal_arm_b, cj.body_a, pj.normal_arm_a) +
-         shared(ci.body_b, pi.normal_arm_b, cj.body_b, pj.normal_arm_b);
-}
-
 // Groups the contacts by island into scratch.order; scratch.island_start and scratch.points,
 // indexed by an island's root body, give each island's first entry and its number of points.
 void find_islands(const std::vector<Contact>& contacts, const BodyInertia& inertia,
@@ -80,21 +66,19 @@ bool solve_island(const std::vector<Contact>& contacts, const BodyInertia& inert
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
   auto k = scratch.k.topLeftCorner(n, n);
   auto w0 = scratch.residual.head(n);
-  auto lambda = scratch.impulse.head(n);
+  auto start = scratch.initial.head(n);
   auto change = scratch.change.head(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Contact& ci = contacts[scratch.rows[i].contact];
     const ContactPointState& pi = ci.points[scratch.rows[i].point];
     for (Eigen::Index j = 0; j <= i; ++j) {
       const Contact& cj = contacts[scratch.rows[j].contact];
-      k(i, j) = k(j, i) = coupling(ci, pi, cj, cj.points[scratch.rows[j].point], inertia);
+      k(i, j) = k(j, i) = normal_coupling(ci, pi, cj, cj.points[scratch.rows[j].point], inertia);
     }
     w0(i) = contact_normal_velocity(s, ci, pi) - pi.target_normal_velocity;
-    lambda(i) = pi.normal_impulse;
+    start(i) = pi.normal_impulse;
     scratch.active[i] = pi.normal_impulse > 0.0 || w0(i) < 0.0;
   }
-  auto start = scratch.initial.head(n);
-  start = lambda;
   // Each round either settles or moves a point between the pushing and the free set; a
   // complementarity problem with a positive definite K settles within a few rounds in practice.
   const int rounds = 2 * static_cast<int>(n) + 4;
@@ -138,7 +122,7 @@ bool solve_island(const std::vector<Contact>& contacts, const BodyInertia& inert
       }
     }
     if (settled) {
-      lambda = (start + change).cwiseMax(0.0);
+      scratch.impulse.head(n) = (start + change).cwiseMax(0.0);
       return true;
     }
   }
