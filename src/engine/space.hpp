@@ -59,7 +59,7 @@ class Space {
   /// The impacts resolved at their time of impact during the last step.
   const std::vector<Impact>& impacts() const { return impacts_; }
   /// The contact constraints of the last sub-step, with the impulses the solver accumulated.
-  const std::vector<Contact>& contacts() const { return contacts_; }
+  const ContactSet& contacts() const { return contacts_; }
 
   /// The space's own models, for a verifier that integrates the same equations another way
   /// (the SUNDIALS oracle): the force model (IM:transMot, IM:rotMot right-hand sides), the shapes
@@ -113,9 +113,9 @@ class Space {
   std::vector<double> end_angle_;
   Accelerations start_acceleration_;
   WorldShapes world_start_, world_end_;
-  std::vector<Contact> contacts_, impact_scratch_;
+  ContactSet contacts_, impact_scratch_;
   std::vector<WarmStart> warm_starts_;         // the impulses of the last sub-step's contacts
-  std::vector<Contact> speculative_contacts_;  // impacts on resting bodies, this step only
+  ContactSet speculative_contacts_;  // impacts on resting bodies, this step only
   SpeculativeScratch speculative_scratch_;
   IslandScratch island_scratch_;
   std::vector<ProxyPair> contact_pairs_;

@@ -16,24 +16,23 @@ constexpr double kStep = 1.0 / 60.0;
 struct RestingBox {
   gp::BodyInertia inertia{{0.0, 1.0}, {0.0, 6.0}};  // a unit box: I = m (w² + h²) / 12 = 1/6
   gp::MotionState state;
-  std::vector<gp::Contact> contacts;
+  gp::ContactSet contacts;
 
   RestingBox() {
     state.resize(2);
     state.position[1] = {0.0, 0.5};
     state.velocity[1] = {0.0, -kGravity * kStep};
-    gp::Contact c{};
+    gp::Contact& c = contacts.append(2);
     c.shape_a = 1;
     c.body_a = 1;
     c.body_b = 0;
     c.normal = {0.0, 1.0};
-    c.count = 2;
     c.friction = 0.6;
     for (int k = 0; k < 2; ++k) {
-      c.points[k].arm_a = {k == 0 ? -0.5 : 0.5, -0.5};
-      c.points[k].arm_b = c.points[k].arm_a + gp::Vec2{0.0, 0.5};
+      gp::ContactPointState& p = contacts.points(c)[k];
+      p.arm_a = {k == 0 ? -0.5 : 0.5, -0.5};
+      p.arm_b = p.arm_a + gp::Vec2{0.0, 0.5};
     }
-    contacts.push_back(c);
     gp::MotionState before = state;
     before.velocity[1] = gp::Vec2::Zero();
     gp::prepare_contacts(contacts, inertia, before, kStep, gp::Settings{});
@@ -50,7 +49,7 @@ TEST_CASE("A box on the ground is stopped in one pass, each corner carrying half
   CHECK(passes == 2);
   CHECK(std::abs(box.state.velocity[1].y()) < 1e-15);
   CHECK(std::abs(box.state.angular_velocity[1]) < 1e-15);
-  for (const auto& p : box.contacts[0].points) {
+  for (const auto& p : box.contacts.points(box.contacts[0])) {
     CHECK(p.normal_impulse == Approx(0.5 * kGravity * kStep).epsilon(1e-14));
     CHECK(p.tangent_impulse == 0.0);
   }
@@ -59,7 +58,7 @@ TEST_CASE("A box on the ground is stopped in one pass, each corner carrying half
 TEST_CASE("Warm-started with last step's impulses, a resting box needs a single pass",
           "[GD:impulse]") {
   RestingBox box;
-  for (auto& p : box.contacts[0].points) p.normal_impulse = 0.5 * kGravity * kStep;
+  for (auto& p : box.contacts.points(box.contacts[0])) p.normal_impulse = 0.5 * kGravity * kStep;
   gp::warm_start(box.contacts, box.inertia, box.state);
   CHECK(gp::solve_velocities(box.contacts, box.inertia, 10, 1e-5, box.state) == 1);
   // Without the tolerance, the passes go on while anything at all changes.

@@ -16,8 +16,7 @@ Frame frame_of(const Space& space, double t) {
   for (const Contact& c : space.contacts()) {
     const BodyState a = space.state(c.body_a);
     const Transform placement(a.position, a.angle);
-    for (int k = 0; k < c.count; ++k) {
-      const ContactPointState& p = c.points[k];
+    for (const ContactPointState& p : space.contacts().points(c)) {
       // Speculative points that never closed carry no impulse and are not contacts to show.
       if (p.normal_impulse <= 0.0) continue;
       f.contacts.push_back(

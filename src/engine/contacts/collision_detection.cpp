@@ -5,7 +5,6 @@
 #include <tuple>
 #include <utility>
 
-#include "engine/capacity.hpp"
 #include "engine/collision/narrowphase.hpp"
 #include "engine/geometry/transform.hpp"
 
@@ -51,18 +50,17 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
 }
 
 Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                        const MotionState& s, std::vector<Contact>& contacts) {
+                        const MotionState& s, ContactSet& contacts) {
   const ShapeRecord& a = shapes[pair.first];
   const ShapeRecord& b = shapes[pair.second];
   // Built in place: a contact built apart and then copied in is read back right after being
   // written, and the copy's wide loads stall on the narrower stores that wrote it.
-  Contact& c = contacts.emplace_back();
+  Contact& c = contacts.append(m.count);
   c.shape_a = pair.first;
   c.shape_b = pair.second;
   c.body_a = a.body;
   c.body_b = b.body;
   c.normal = m.normal;
-  c.count = m.count;
   c.restitution = std::max(a.restitution, b.restitution);
   c.friction = std::sqrt(a.friction * b.friction);
   // A disc's anchor needs no frame: spare its trigonometry.
@@ -72,9 +70,10 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
   };
   const Transform frame_a = frame_of(a);
   const Transform frame_b = frame_of(b);
+  const std::span<ContactPointState> points = contacts.points(c);
   for (int k = 0; k < m.count; ++k) {
     const ContactPoint& point = m.points[k];
-    ContactPointState& q = c.points[k];
+    ContactPointState& q = points[k];
     q.id = point.id;
     q.depth = point.depth;
     q.arm_a = point.position - s.position[a.body];
@@ -92,10 +91,10 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
 void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
                                        const BodyShapes& shapes, const WorldShapes& world,
                                        const MotionState& s, const std::vector<WarmStart>& previous,
-                                       double impulse_scale, std::vector<Contact>& contacts) const {
+                                       double impulse_scale, ContactSet& contacts) const {
   contacts.clear();
   // A pair makes one contact at most.
-  reserve_for(contacts, pairs.size());
+  contacts.reserve(pairs.size());
   auto old = previous.begin();
   for (const ProxyPair& p : pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);
@@ -104,13 +103,11 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
     const std::uint64_t key = key_of(p);
     while (old != previous.end() && old->key < key) ++old;
-    if (old != previous.end() && old->key == key) {
-      for (int k = 0; k < c.count; ++k) {
-        for (int j = 0; j < old->count; ++j) {
-          if (old->points[j].id == c.points[k].id) {
-            c.points[k].normal_impulse = impulse_scale * old->points[j].normal;
-            c.points[k].tangent_impulse = impulse_scale * old->points[j].tangent;
-          }
+    for (auto same = old; same != previous.end() && same->key == key; ++same) {
+      for (ContactPointState& q : contacts.points(c)) {
+        if (same->id == q.id) {
+          q.normal_impulse = impulse_scale * same->normal;
+          q.tangent_impulse = impulse_scale * same->tangent;
         }
       }
     }

@@ -8,7 +8,7 @@
 #include "engine/collision/broadphase.hpp"
 #include "engine/collision/pair_order.hpp"
 #include "engine/contacts/body_shapes.hpp"
-#include "engine/contacts/contact.hpp"
+#include "engine/contacts/contact_set.hpp"
 #include "engine/contacts/warm_start.hpp"
 
 namespace gp {
@@ -17,7 +17,7 @@ namespace gp {
 /// found in state `s`: combined surface properties, and per point its depth, arms and the anchors
 /// that measure the overlap again after the bodies move. Impulses start at 0.
 Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                        const MotionState& s, std::vector<Contact>& contacts);
+                        const MotionState& s, ContactSet& contacts);
 
 class CollisionDetection {
  public:
@@ -36,7 +36,7 @@ class CollisionDetection {
   void find_contacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
                      const WorldShapes& world, const MotionState& s,
                      const std::vector<WarmStart>& previous, double impulse_scale,
-                     std::vector<Contact>& contacts) const;
+                     ContactSet& contacts) const;
 
   double margin() const { return margin_; }
 

@@ -1,7 +1,6 @@
 #pragma once
 // A contact constraint between two shapes, as the solver keeps it from one step to the next.
 
-#include <array>
 #include <cstdint>
 
 #include "engine/collision/broadphase.hpp"
@@ -55,19 +54,21 @@ struct NormalBlock {
   bool solvable = false;
 };
 
+/// A contact constraint between two shapes; its points and, for two points, its block are kept
+/// by the ContactSet it belongs to.
 struct Contact {
   std::uint32_t shape_a;
   std::uint32_t shape_b;
   BodyId body_a;
   BodyId body_b;
   Vec2 normal;  ///< unit, world, from B towards A
-  int count;
   double restitution;  ///< C_R = max of the two shapes'
   double friction;     ///< μ = √(μ_a μ_b)
-  std::array<ContactPointState, 2> points;
-  /// Both normal constraints of a two-point contact as one (the block solver's), set up once per
-  /// step so that the solver's passes divide nothing.
-  NormalBlock block;
+  std::uint32_t first_point;  ///< where the points start in the ContactSet
+  int count;                  ///< of points: 1 or 2
+  /// Of a two-point contact, where its NormalBlock is in the ContactSet, set up once per step so
+  /// that the solver's passes divide nothing.
+  std::uint32_t block;
 
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
   std::uint64_t key() const { return key_of({shape_a, shape_b}); }

@@ -156,11 +156,9 @@ namespace {
 // problem solved by enumerating its four cases (Box2D's block solver): solving the two points one
 // after the other leaves a residual that turns a tall stack. Returns false, leaving the points to
 // the one-by-one solver, when the two points are nearly redundant (ill-conditioned matrix).
-bool solve_pair(Contact& c, PairMotion& m) {
-  const NormalBlock& k = c.block;
+bool solve_pair(const Contact& c, const NormalBlock& k, ContactPointState& p, ContactPointState& q,
+                PairMotion& m) {
   if (!k.solvable) return false;
-  ContactPointState& p = c.points[0];
-  ContactPointState& q = c.points[1];
   const Vec2 old{p.normal_impulse, q.normal_impulse};
   // Velocities the constraints must reach, less what the impulses already applied give.
   const Vec2 b{
@@ -186,9 +184,8 @@ bool solve_pair(Contact& c, PairMotion& m) {
 // Whether a pass over `c` would change nothing: no point pushes or rubs yet, and none would
 // have to, because each already separates at least as fast as its target asks (a speculative
 // point whose gap the step does not close). Friction cannot act without a normal impulse.
-bool idle(const Contact& c, const PairMotion& m) {
-  for (int k = 0; k < c.count; ++k) {
-    const ContactPointState& p = c.points[k];
+bool idle(const Contact& c, std::span<const ContactPointState> points, const PairMotion& m) {
+  for (const ContactPointState& p : points) {
     if (p.normal_impulse != 0.0 || p.tangent_impulse != 0.0 ||
         m.normal_velocity(c, p) < p.target_normal_velocity) {
       return false;
@@ -199,14 +196,14 @@ bool idle(const Contact& c, const PairMotion& m) {
 
 // One pass of sequential impulses over the points of `c`: friction, then the normal constraints.
 // Returns the largest change of an accumulated impulse in the pass [N·s].
-double solve_contact(Contact& c, PairMotion& m) {
-  if (idle(c, m)) return 0.0;
+double solve_contact(const ContactSet& contacts, const Contact& c,
+                     std::span<ContactPointState> points, PairMotion& m) {
+  if (idle(c, points, m)) return 0.0;
   double largest_change = 0.0;
   if (c.friction > 0.0) {
     // Friction first, so the normal constraints, solved last, are the ones met exactly.
     const Vec2 tangent = tangent_of(c.normal);
-    for (int k = 0; k < c.count; ++k) {
-      ContactPointState& p = c.points[k];
+    for (ContactPointState& p : points) {
       const double limit = c.friction * p.normal_impulse;
       const double change = -p.tangent_mass * m.tangent_velocity(tangent, p);
       const double total = std::clamp(p.tangent_impulse + change, -limit, limit);
@@ -216,14 +213,13 @@ double solve_contact(Contact& c, PairMotion& m) {
     }
   }
   if (c.count == 2) {
-    const Vec2 old{c.points[0].normal_impulse, c.points[1].normal_impulse};
-    if (solve_pair(c, m)) {
-      return std::max({largest_change, std::abs(c.points[0].normal_impulse - old.x()),
-                       std::abs(c.points[1].normal_impulse - old.y())});
+    const Vec2 old{points[0].normal_impulse, points[1].normal_impulse};
+    if (solve_pair(c, contacts.block(c), points[0], points[1], m)) {
+      return std::max({largest_change, std::abs(points[0].normal_impulse - old.x()),
+                       std::abs(points[1].normal_impulse - old.y())});
     }
   }
-  for (int k = 0; k < c.count; ++k) {
-    ContactPointState& p = c.points[k];
+  for (ContactPointState& p : points) {
     const double change = p.normal_mass * (p.target_normal_velocity - m.normal_velocity(c, p));
     const double total = std::max(p.normal_impulse + change, 0.0);
     largest_change = std::max(largest_change, std::abs(total - p.normal_impulse));
@@ -249,7 +245,7 @@ double apply_collision_response(const Contact& c, const ContactPointState& p, do
   return r.impulse;
 }
 
-bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+bool propagate_impacts(const ContactSet& contacts, const BodyInertia& inertia,
                        const Settings& settings, MotionState& s) {
   bool any = false;
   int passes = settings.velocity_iterations;
@@ -257,8 +253,7 @@ bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& 
     struck = false;
     for (const Contact& c : contacts) {
       if (c.restitution == 0.0) continue;
-      for (int k = 0; k < c.count; ++k) {
-        const ContactPointState& p = c.points[k];
+      for (const ContactPointState& p : contacts.points(c)) {
         if (p.depth <= -settings.linear_slop) continue;
         if (contact_relative_velocity(s, c, p).dot(c.normal) >= -settings.restitution_threshold) {
           continue;
@@ -273,9 +268,8 @@ bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& 
 
 namespace {
 
-NormalBlock normal_block(const BodyInertia& inertia, const Contact& c) {
-  const ContactPointState& p = c.points[0];
-  const ContactPointState& q = c.points[1];
+NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const ContactPointState& p,
+                         const ContactPointState& q) {
   NormalBlock k;
   k.k11 = 1.0 / p.normal_mass;
   k.k22 = 1.0 / q.normal_mass;
@@ -293,12 +287,13 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c) {
 
 }  // namespace
 
-void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
+void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
+  contacts.clear_blocks();
   for (Contact& c : contacts) {
     const Vec2 tangent = tangent_of(c.normal);
-    for (int k = 0; k < c.count; ++k) {
-      ContactPointState& p = c.points[k];
+    const std::span<ContactPointState> points = contacts.points(c);
+    for (ContactPointState& p : points) {
       p.normal_arm_a = dd::torque(p.arm_a, c.normal);
       p.normal_arm_b = dd::torque(p.arm_b, c.normal);
       p.tangent_arm_a = dd::torque(p.arm_a, tangent);
@@ -311,15 +306,14 @@ void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia
       // apply_restitution acts only where the normal impulse is positive.
       p.approach_velocity = approach < -settings.restitution_threshold ? approach : 0.0;
     }
-    if (c.count == 2) c.block = normal_block(inertia, c);
+    if (c.count == 2) contacts.set_block(c, normal_block(inertia, c, points[0], points[1]));
   }
 }
 
-void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s) {
+void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
   for (const Contact& c : contacts) {
     PairMotion m(c, inertia, s);
-    for (int k = 0; k < c.count; ++k) {
-      const ContactPointState& p = c.points[k];
+    for (const ContactPointState& p : contacts.points(c)) {
       m.push_normal(c, p, p.normal_impulse);
       m.push_tangent(tangent_of(c.normal), p, p.tangent_impulse);
     }
@@ -331,18 +325,19 @@ namespace {
 
 // One pass over `c` (solve_contact) on the velocities of `s`; returns the largest change it made
 // to its two bodies' velocities [m/s].
-double solve_once(Contact& c, const BodyInertia& inertia, MotionState& s) {
+double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
+                  MotionState& s) {
   PairMotion m(c, inertia, s);
-  const double change = solve_contact(c, m) * (m.inverse_mass_a + m.inverse_mass_b);
+  const double change =
+      solve_contact(contacts, c, contacts.points(c), m) * (m.inverse_mass_a + m.inverse_mass_b);
   m.store(c, s);
   return change;
 }
 
 // move_by_contact_impulses for one contact.
-void move_by_impulses(const Contact& c, const BodyInertia& inertia, double duration,
-                      MotionState& s) {
-  for (int k = 0; k < c.count; ++k) {
-    const ContactPointState& p = c.points[k];
+void move_by_impulses(const ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
+                      double duration, MotionState& s) {
+  for (const ContactPointState& p : contacts.points(c)) {
     const Vec2 impulse = p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal);
     displace(inertia, c, p.arm_a, p.arm_b, duration * impulse, s);
   }
@@ -350,12 +345,12 @@ void move_by_impulses(const Contact& c, const BodyInertia& inertia, double durat
 
 }  // namespace
 
-int solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
+int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s) {
   for (int i = 0; i < iterations;) {
     double largest_change = 0.0;
-    for (Contact& c : contacts)
-      largest_change = std::max(largest_change, solve_once(c, inertia, s));
+    for (const Contact& c : contacts)
+      largest_change = std::max(largest_change, solve_once(contacts, c, inertia, s));
     ++i;
     // A pass that changed the velocities by at most the tolerance leaves the next about as
     // little to do (none at all when it changed nothing).
@@ -364,12 +359,11 @@ int solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia,
   return iterations;
 }
 
-void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s) {
-  for (Contact& c : contacts) {
+void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
+  for (const Contact& c : contacts) {
     if (c.restitution == 0.0) continue;
     PairMotion m(c, inertia, s);
-    for (int k = 0; k < c.count; ++k) {
-      ContactPointState& p = c.points[k];
+    for (ContactPointState& p : contacts.points(c)) {
       if (p.approach_velocity == 0.0 || p.normal_impulse == 0.0) continue;
       const double change =
           -p.normal_mass * (m.normal_velocity(c, p) + c.restitution * p.approach_velocity);
@@ -381,12 +375,12 @@ void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inerti
   }
 }
 
-void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s) {
-  for (const Contact& c : contacts) move_by_impulses(c, inertia, duration, s);
+  for (const Contact& c : contacts) move_by_impulses(contacts, c, inertia, duration, s);
 }
 
-void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& speculative,
+void solve_speculative(ContactSet& resting, ContactSet& speculative,
                        const BodyInertia& inertia, const MotionState& before, double h,
                        const Settings& settings, MotionState& s, SpeculativeScratch& scratch) {
   // An impact's impulse fades as it spreads through a heap: the resting contacts up to this many
@@ -415,14 +409,14 @@ void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& spec
   }
   // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
   // impulses so far, and give h × their final impulses at the end.
-  for (std::size_t i : scratch.nearby) move_by_impulses(resting[i], inertia, -h, s);
+  for (std::size_t i : scratch.nearby) move_by_impulses(resting, resting[i], inertia, -h, s);
   prepare_contacts(speculative, inertia, before, h, settings);
   for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
-    for (std::size_t i : scratch.nearby) solve_once(resting[i], inertia, s);
-    for (Contact& c : speculative) solve_once(c, inertia, s);
+    for (std::size_t i : scratch.nearby) solve_once(resting, resting[i], inertia, s);
+    for (const Contact& c : speculative) solve_once(speculative, c, inertia, s);
   }
   apply_restitution(speculative, inertia, s);
-  for (std::size_t i : scratch.nearby) move_by_impulses(resting[i], inertia, h, s);
+  for (std::size_t i : scratch.nearby) move_by_impulses(resting, resting[i], inertia, h, s);
   move_by_contact_impulses(speculative, inertia, h, s);
 }
 
@@ -431,7 +425,7 @@ void RotationCache::reset(std::size_t bodies) {
   rotation_.resize(bodies);
 }
 
-void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+void correct_positions(const ContactSet& contacts, const BodyInertia& inertia,
                        int iterations, double slop, MotionState& s, RotationCache& rotations) {
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
@@ -441,8 +435,7 @@ void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& 
   for (bool deep = true; deep && iterations-- > 0;) {
     deep = false;
     for (const Contact& c : contacts) {
-      for (int k = 0; k < c.count; ++k) {
-        const ContactPointState& p = c.points[k];
+      for (const ContactPointState& p : contacts.points(c)) {
         const Vec2 arm_a = rotations.rotate(c.body_a, s.angle[c.body_a], p.local_anchor_a) -
                            p.anchor_radius_a * c.normal;
         const Vec2 arm_b = rotations.rotate(c.body_b, s.angle[c.body_b], p.local_anchor_b) +

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "engine/contacts/contact.hpp"
+#include "engine/contacts/contact_set.hpp"
 #include "engine/dynamics/motion_state.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/settings.hpp"
@@ -52,37 +52,37 @@ double apply_collision_response(const Contact& c, const ContactPointState& p, do
 /// many passes as the solver's velocity iterations). This is the sequential model of simultaneous
 /// impacts, under which the cradle passes the momentum along the row to its last ball, where a
 /// simultaneous solve spreads it over the row. Returns whether any impulse was applied.
-bool propagate_impacts(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+bool propagate_impacts(const ContactSet& contacts, const BodyInertia& inertia,
                        const Settings& settings, MotionState& s);
 
 /// Prepares each point for a step of h [s]: its effective masses; its target normal velocity, the
 /// speed that just closes the gap for points still apart, else 0; and, for touching points
 /// approaching faster than the restitution threshold, that approach velocity v_n (measured in
 /// `before`, the state before the step's forces) for apply_restitution.
-void prepare_contacts(std::vector<Contact>& contacts, const BodyInertia& inertia,
+void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings);
 
 /// Applies the carried-over impulses of every point to the velocities of `s`.
-void warm_start(const std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s);
+void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
 
 /// At most `iterations` passes of sequential impulses over the points' friction and normal
 /// constraints (no bounce: restitution comes after, in apply_restitution), ending after the
 /// first pass in which no contact's impulses changed its two bodies' velocities by more than
 /// `tolerance` [m/s] (0: only a pass that changed nothing ends them). Returns the passes made.
-int solve_velocities(std::vector<Contact>& contacts, const BodyInertia& inertia, int iterations,
+int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s);
 
 /// One pass that adds the bounce, −C_R times the approach velocity, to each point that was
 /// approaching and took an impulse. A separate pass after the others (as in Box2D 3) rather than
 /// a target inside them: simultaneous targets make a body pinned between two contacts (a disc
 /// struck against a wall) bounce off both at once, which creates energy.
-void apply_restitution(std::vector<Contact>& contacts, const BodyInertia& inertia, MotionState& s);
+void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
 
 /// Moves and turns the bodies by the velocity changes of the contacts' accumulated impulses
 /// (DD:impulseV, DD:torque) kept up for `duration` [s]: share × h for impulses that act over a
 /// step of h like forces (the integrator's impulse_position_share). A negative duration takes a
 /// displacement back.
-void move_by_contact_impulses(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s);
 
 /// Scratch for solve_speculative, kept by the caller so that a step does not allocate.
@@ -100,7 +100,7 @@ struct SpeculativeScratch {
 /// impact on, so they move the bodies by h × Δv, which closes each gap exactly, rather than by
 /// the resting share, which would leave a fast body overlapping and press the body under it
 /// into the ground.
-void solve_speculative(std::vector<Contact>& resting, std::vector<Contact>& speculative,
+void solve_speculative(ContactSet& resting, ContactSet& speculative,
                        const BodyInertia& inertia, const MotionState& before, double h,
                        const Settings& settings, MotionState& s, SpeculativeScratch& scratch);
 
@@ -143,7 +143,7 @@ class RotationCache {
 /// contact points overlap by more than `slop` [m], removing a fifth of the excess per pass
 /// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops.
 /// `rotations` is scratch, kept by the caller so that a step does not allocate.
-void correct_positions(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+void correct_positions(const ContactSet& contacts, const BodyInertia& inertia,
                        int iterations, double slop, MotionState& s, RotationCache& rotations);
 
 }  // namespace gp

@@ -126,7 +126,7 @@ std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs
 
 void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
                      const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
-                     std::vector<Contact>& contacts, std::vector<Impact>& log) {
+                     ContactSet& contacts, std::vector<Impact>& log) {
   contacts.clear();
   for (const ProxyPair& p : pairs) {
     const ShapeRecord& a = shapes[p.first];
@@ -143,12 +143,12 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
   if (contacts.size() == 1 && contacts[0].count == 1 && contacts[0].friction == 0.0) {
     // One frictionless point: IM:col2D exactly.
     const Contact& c = contacts[0];
-    const ContactPointState& p = c.points[0];
+    const ContactPointState& p = contacts.points(c)[0];
     const double restitution =
         approach(c, p) < -settings.restitution_threshold ? c.restitution : 0.0;
     const double impulse = apply_collision_response(c, p, restitution, inertia, s);
     log.push_back(
-        {t, c.body_a, c.body_b, c.normal, c.points[0].arm_a + s.position[c.body_a], impulse});
+        {t, c.body_a, c.body_b, c.normal, p.arm_a + s.position[c.body_a], impulse});
     return;
   }
   // An impact takes no time: no gap to close, only the restitution targets.
@@ -159,9 +159,9 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
   for (const Contact& c : contacts) {
     Vec2 point = Vec2::Zero();
     double impulse = 0.0;
-    for (int k = 0; k < c.count; ++k) {
-      point += (c.points[k].arm_a + s.position[c.body_a]) / c.count;
-      impulse += c.points[k].normal_impulse;
+    for (const ContactPointState& p : contacts.points(c)) {
+      point += (p.arm_a + s.position[c.body_a]) / c.count;
+      impulse += p.normal_impulse;
     }
     log.push_back({t, c.body_a, c.body_b, c.normal, point, impulse});
   }

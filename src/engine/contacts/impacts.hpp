@@ -91,6 +91,6 @@ class ImpactSearch {
 /// `contacts` is scratch, kept by the caller so that an impact allocates nothing.
 void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
                      const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
-                     std::vector<Contact>& contacts, std::vector<Impact>& log);
+                     ContactSet& contacts, std::vector<Impact>& log);
 
 }  // namespace gp

@@ -21,7 +21,7 @@ bool movable(const BodyInertia& m, BodyId body) {
 
 // Groups the contacts by island into scratch.order; scratch.island_start and scratch.points,
 // indexed by an island's root body, give each island's first entry and its number of points.
-void find_islands(const std::vector<Contact>& contacts, const BodyInertia& inertia,
+void find_islands(const ContactSet& contacts, const BodyInertia& inertia,
                   IslandScratch& scratch) {
   const std::size_t bodies = inertia.inverse_mass.size();
   scratch.parent.resize(bodies);
@@ -61,8 +61,8 @@ void find_islands(const std::vector<Contact>& contacts, const BodyInertia& inert
 // The active-set method of solve_small_islands on scratch.rows; leaves the new normal impulses in
 // scratch.impulse. Returns false if it does not settle or K restricted to the pushing points is
 // singular (redundant points).
-bool solve_island(const std::vector<Contact>& contacts, const BodyInertia& inertia,
-                  const MotionState& s, IslandScratch& scratch) {
+bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const MotionState& s,
+                  IslandScratch& scratch) {
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
   auto k = scratch.k.topLeftCorner(n, n);
   auto w0 = scratch.residual.head(n);
@@ -70,10 +70,11 @@ bool solve_island(const std::vector<Contact>& contacts, const BodyInertia& inert
   auto change = scratch.change.head(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Contact& ci = contacts[scratch.rows[i].contact];
-    const ContactPointState& pi = ci.points[scratch.rows[i].point];
+    const ContactPointState& pi = contacts.points(ci)[scratch.rows[i].point];
     for (Eigen::Index j = 0; j <= i; ++j) {
       const Contact& cj = contacts[scratch.rows[j].contact];
-      k(i, j) = k(j, i) = normal_coupling(ci, pi, cj, cj.points[scratch.rows[j].point], inertia);
+      k(i, j) = k(j, i) =
+          normal_coupling(ci, pi, cj, contacts.points(cj)[scratch.rows[j].point], inertia);
     }
     w0(i) = contact_normal_velocity(s, ci, pi) - pi.target_normal_velocity;
     start(i) = pi.normal_impulse;
@@ -131,7 +132,7 @@ bool solve_island(const std::vector<Contact>& contacts, const BodyInertia& inert
 
 }  // namespace
 
-int solve_small_islands(std::vector<Contact>& contacts, const BodyInertia& inertia,
+int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia,
                         std::size_t max_points, MotionState& s, IslandScratch& scratch) {
   if (contacts.empty() || max_points == 0) return 0;
   find_islands(contacts, inertia, scratch);
@@ -162,8 +163,8 @@ int solve_small_islands(std::vector<Contact>& contacts, const BodyInertia& inert
     if (!solve_island(contacts, inertia, s, scratch)) continue;
     ++solved;
     for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
-      Contact& c = contacts[scratch.rows[i].contact];
-      ContactPointState& p = c.points[scratch.rows[i].point];
+      const Contact& c = contacts[scratch.rows[i].contact];
+      ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
       const double normal = scratch.impulse(static_cast<Eigen::Index>(i));
       const double limit = c.friction * normal;
       const double tangent = std::clamp(p.tangent_impulse, -limit, limit);

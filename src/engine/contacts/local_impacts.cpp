@@ -11,7 +11,7 @@ namespace gp {
 
 void LocalImpacts::classify(const std::vector<ProxyPair>& pairs, const WorldShapes& start,
                             const WorldShapes& end, const Ballistic& motion, double h, bool search,
-                            std::vector<Contact>& contacts) {
+                            ContactSet& contacts) {
   pending_.clear();
   if (!search) return;
   const ImpactFilter f = impact_filter(settings_);
@@ -21,7 +21,7 @@ void LocalImpacts::classify(const std::vector<ProxyPair>& pairs, const WorldShap
     while (contact != contacts.end() && contact->key() < key_of(p)) ++contact;
     const bool has_contact = contact != contacts.end() && contact->key() == key_of(p);
     // Touching already: the contact solver's, and no distance to compute.
-    if (has_contact && touching(*contact)) continue;
+    if (has_contact && touching(contacts, *contact)) continue;
     const auto tau = impact_time(shapes_[p.first], shapes_[p.second], start[p.first],
                                  start[p.second], end[p.first], end[p.second], motion, 0.0, h, f);
     if (tau) pending_.push_back({p, *tau});
@@ -29,22 +29,22 @@ void LocalImpacts::classify(const std::vector<ProxyPair>& pairs, const WorldShap
   if (pending_.empty()) return;
   // An impact is resolved at its t_c; its speculative contact must not close the gap before.
   auto impact = pending_.begin();
-  std::erase_if(contacts, [&](const Contact& c) {
+  contacts.erase_if([&](const Contact& c) {
     while (impact != pending_.end() && key_of(impact->pair) < c.key()) ++impact;
     return impact != pending_.end() && key_of(impact->pair) == c.key();
   });
 }
 
-bool LocalImpacts::touching(const Contact& c) const {
-  for (int k = 0; k < c.count; ++k) {
-    if (c.points[k].depth > -settings_.linear_slop) return true;
+bool LocalImpacts::touching(const ContactSet& contacts, const Contact& c) const {
+  for (const ContactPointState& p : contacts.points(c)) {
+    if (p.depth > -settings_.linear_slop) return true;
   }
   return false;
 }
 
-bool LocalImpacts::engaged(const Contact& c, const MotionState& s, double h) const {
-  for (int k = 0; k < c.count; ++k) {
-    const ContactPointState& p = c.points[k];
+bool LocalImpacts::engaged(const ContactSet& contacts, const Contact& c, const MotionState& s,
+                           double h) const {
+  for (const ContactPointState& p : contacts.points(c)) {
     const double closing = -contact_relative_velocity(s, c, p).dot(c.normal) * h;  // m
     if (p.depth + std::max(closing, 0.0) > -settings_.linear_slop) return true;
   }
@@ -52,13 +52,13 @@ bool LocalImpacts::engaged(const Contact& c, const MotionState& s, double h) con
 }
 
 void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, double h,
-                             std::vector<Contact>& contacts, std::vector<Contact>& speculative) {
+                             ContactSet& contacts, ContactSet& speculative) {
   in_solver_.assign(dynamic_.size(), 0);
   const auto join = [this](BodyId b) {
     if (dynamic_[b]) in_solver_[b] = 1;
   };
   for (const Contact& c : contacts) {
-    if (!engaged(c, s, h)) continue;
+    if (!engaged(contacts, c, s, h)) continue;
     join(c.body_a);
     join(c.body_b);
   }
@@ -86,7 +86,7 @@ void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, dou
       with_impact_[shapes_[e.pair.first].body] = 1;
       with_impact_[shapes_[e.pair.second].body] = 1;
     }
-    std::erase_if(contacts, [this](const Contact& c) {
+    contacts.erase_if([this](const Contact& c) {
       return (dynamic_[c.body_a] && with_impact_[c.body_a]) ||
              (dynamic_[c.body_b] && with_impact_[c.body_b]);
     });

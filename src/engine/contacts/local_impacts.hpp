@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine/contacts/body_shapes.hpp"
-#include "engine/contacts/contact.hpp"
+#include "engine/contacts/contact_set.hpp"
 #include "engine/contacts/impacts.hpp"
 #include "engine/settings.hpp"
 
@@ -30,7 +30,7 @@ class LocalImpacts {
   /// `contacts` (the contacts of `pairs`; both sorted by pair), as the impacts take their place.
   void classify(const std::vector<ProxyPair>& pairs, const WorldShapes& start,
                 const WorldShapes& end, const Ballistic& motion, double h, bool search,
-                std::vector<Contact>& contacts);
+                ContactSet& contacts);
 
   /// Pending impacts on bodies that take part in `contacts` become `speculative` contacts
   /// (made at placement `start` of state `s`; see solve_speculative), and so do impacts on bodies
@@ -38,7 +38,7 @@ class LocalImpacts {
   /// when one of its contacts is engaged over the step of h [s]. The other contacts of bodies left
   /// with impacts are dropped: the impacts' own search covers them.
   void hand_over(const WorldShapes& start, const MotionState& s, double h,
-                 std::vector<Contact>& contacts, std::vector<Contact>& speculative);
+                 ContactSet& contacts, ContactSet& speculative);
 
   /// Resolves the remaining impacts in time order, each at its t_c = t + τ, and logs them in
   /// `log` (at most `max_impacts` - `impacts` of them; `impacts` counts them). Each body an
@@ -56,11 +56,11 @@ class LocalImpacts {
     double time;  ///< τ [s] from the start of the step
   };
 
-  /// Whether a point of `c` overlaps or is within the slop.
-  bool touching(const Contact& c) const;
-  /// Whether contact `c` can push during a step of h [s] from state `s`: a point touching, or
-  /// closing its gap within the step.
-  bool engaged(const Contact& c, const MotionState& s, double h) const;
+  /// Whether a point of `c` (of `contacts`) overlaps or is within the slop.
+  bool touching(const ContactSet& contacts, const Contact& c) const;
+  /// Whether contact `c` (of `contacts`) can push during a step of h [s] from state `s`: a point
+  /// touching, or closing its gap within the step.
+  bool engaged(const ContactSet& contacts, const Contact& c, const MotionState& s, double h) const;
   bool in_solver(std::uint32_t shape) const { return in_solver_[shapes_[shape].body] != 0; }
   /// The state of body b at τ on its path, resolved at τ, and its path restarted there.
   void restart(BodyId b, double tau, MotionState& start, const Accelerations& acceleration) const;
@@ -82,7 +82,7 @@ class LocalImpacts {
   std::vector<BodyId> changed_;
   std::vector<WorldShape> here_;  // the changed shapes placed at the impact, in search order
   std::vector<char> is_changed_;
-  std::vector<Contact> impact_contacts_;
+  ContactSet impact_contacts_;
   MotionState at_impact_;
 };
 

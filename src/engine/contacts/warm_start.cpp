@@ -4,15 +4,13 @@
 
 namespace gp {
 
-void keep_impulses(const std::vector<Contact>& contacts, std::vector<WarmStart>& kept) {
+void keep_impulses(const ContactSet& contacts, std::vector<WarmStart>& kept) {
   kept.clear();
-  reserve_for(kept, contacts.size());
+  reserve_for(kept, contacts.point_count());
   for (const Contact& c : contacts) {
-    WarmStart w{c.key(), c.count, {}};
-    for (int k = 0; k < c.count; ++k) {
-      w.points[k] = {c.points[k].id, c.points[k].normal_impulse, c.points[k].tangent_impulse};
+    for (const ContactPointState& p : contacts.points(c)) {
+      kept.push_back({c.key(), p.id, p.normal_impulse, p.tangent_impulse});
     }
-    kept.push_back(w);
   }
 }
 

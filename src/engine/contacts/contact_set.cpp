@@ -1,0 +1,30 @@
+#include "engine/contacts/contact_set.hpp"
+
+#include "engine/capacity.hpp"
+
+namespace gp {
+
+void ContactSet::clear() {
+  contacts_.clear();
+  points_.clear();
+  blocks_.clear();
+}
+
+void ContactSet::reserve(std::size_t contacts) { reserve_for(contacts_, contacts); }
+
+Contact& ContactSet::append(int count) {
+  reserve_for(points_, points_.size() + static_cast<std::size_t>(count));
+  Contact& c = contacts_.emplace_back();
+  c.first_point = static_cast<std::uint32_t>(points_.size());
+  c.count = count;
+  points_.resize(points_.size() + static_cast<std::size_t>(count));
+  return c;
+}
+
+void ContactSet::set_block(Contact& c, const NormalBlock& block) {
+  reserve_for(blocks_, blocks_.size() + 1);
+  c.block = static_cast<std::uint32_t>(blocks_.size());
+  blocks_.push_back(block);
+}
+
+}  // namespace gp
