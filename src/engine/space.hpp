@@ -114,8 +114,8 @@ class Space {
   Accelerations start_acceleration_;
   WorldShapes world_start_, world_end_;
   ContactSet contacts_, impact_scratch_;
-  std::vector<WarmStart> warm_starts_;         // the impulses of the last sub-step's contacts
-  ContactSet speculative_contacts_;  // impacts on resting bodies, this step only
+  std::vector<WarmStart> warm_starts_;  // the impulses of the last sub-step's contacts
+  ContactSet speculative_contacts_;     // impacts on resting bodies, this step only
   SpeculativeScratch speculative_scratch_;
   IslandScratch island_scratch_;
   std::vector<ProxyPair> contact_pairs_;

@@ -30,8 +30,8 @@ struct RestingBox {
     c.friction = 0.6;
     for (int k = 0; k < 2; ++k) {
       gp::ContactPointState& p = contacts.points(c)[k];
-      p.arm_a = {k == 0 ? -0.5 : 0.5, -0.5};
-      p.arm_b = p.arm_a + gp::Vec2{0.0, 0.5};
+      const gp::Vec2 arm_a{k == 0 ? -0.5 : 0.5, -0.5};
+      gp::set_arms(p, c.normal, arm_a, arm_a + gp::Vec2{0.0, 0.5});
     }
     gp::MotionState before = state;
     before.velocity[1] = gp::Vec2::Zero();

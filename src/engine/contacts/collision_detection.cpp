@@ -76,8 +76,7 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
     ContactPointState& q = points[k];
     q.id = point.id;
     q.depth = point.depth;
-    q.arm_a = point.position - s.position[a.body];
-    q.arm_b = point.position - s.position[b.body];
+    set_arms(q, m.normal, point.position - s.position[a.body], point.position - s.position[b.body]);
     // The deepest points of each shape inside the other, fixed in their bodies, measure the
     // penetration again after the bodies move (position correction).
     std::tie(q.local_anchor_a, q.anchor_radius_a) =

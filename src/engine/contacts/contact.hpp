@@ -6,6 +6,7 @@
 #include "engine/collision/broadphase.hpp"
 #include "engine/collision/contact.hpp"
 #include "engine/dynamics/force_model.hpp"
+#include "gamephysics/models/dd/torque.hpp"
 
 namespace gp {
 
@@ -14,21 +15,28 @@ inline std::uint64_t key_of(const ProxyPair& pair) {
   return (std::uint64_t{pair.first} << 32) | pair.second;
 }
 
+/// The unit tangent of a contact whose normal is `normal`: the normal turned a quarter turn
+/// counter-clockwise.
+inline Vec2 contact_tangent(const Vec2& normal) {
+  return {-normal.y(), normal.x()};
+}
+
 /// One point of a contact constraint. The fields a solver pass reads come first, so that they
-/// share two cache lines.
+/// share two cache lines. The arms themselves are not kept: set_arms keeps their cross products
+/// with the normal and the tangent, from which arm_a and arm_b rebuild them.
 struct ContactPointState {
   double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
   double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
   double target_normal_velocity = 0.0;  ///< m/s, what the solver drives v_rel·n to at least
   double normal_mass = 0.0;   ///< kg: impulse per unit change of v_rel·n (GD:impulse, C_R = 0)
   double tangent_mass = 0.0;  ///< kg: the same along the tangent
-  /// m: the arms crossed with the normal and the tangent, set up once per step. Each is both the
-  /// torque of a unit impulse along that direction (DD:torque) and the speed along it that a unit
-  /// angular velocity gives the point, (ω × r)·d = ω (r × d) (DD:chaslesThm).
+  /// m: the arms, from each body's centre of mass to the point, crossed with the normal and the
+  /// tangent. Each is both the torque of a unit impulse along that direction (DD:torque) and the
+  /// speed along it that a unit angular velocity gives the point, (ω × r)·d = ω (r × d)
+  /// (DD:chaslesThm).
   double normal_arm_a = 0.0, normal_arm_b = 0.0;
   double tangent_arm_a = 0.0, tangent_arm_b = 0.0;
-  Vec2 arm_a = Vec2::Zero();  ///< m, from A's centre of mass to the point
-  Vec2 arm_b = Vec2::Zero();  ///< m, from B's centre of mass to the point
+  double depth = 0.0;  ///< m, overlap at detection (negative: still apart)
   /// m, in A's frame: A's deepest point is this point plus anchor_radius_a along −normal (a
   /// circle's centre and radius, so that a disc's turning does not move its deepest point).
   Vec2 local_anchor_a = Vec2::Zero();
@@ -36,12 +44,28 @@ struct ContactPointState {
   Vec2 local_anchor_b = Vec2::Zero();
   double anchor_radius_a = 0.0;  ///< m
   double anchor_radius_b = 0.0;  ///< m
-  double depth = 0.0;            ///< m, overlap at detection (negative: still apart)
   /// m/s: v_rel·n before the step when the point was touching and approaching faster than the
   /// restitution threshold (it then bounces with C_R), else 0.
   double approach_velocity = 0.0;
   FeatureId id;
 };
+
+/// Sets the arms of `p` [m], from A's and B's centre of mass to the point, for a contact whose
+/// normal is `normal`.
+inline void set_arms(ContactPointState& p, const Vec2& normal, const Vec2& arm_a,
+                     const Vec2& arm_b) {
+  const Vec2 tangent = contact_tangent(normal);
+  p.normal_arm_a = dd::torque(arm_a, normal);
+  p.normal_arm_b = dd::torque(arm_b, normal);
+  p.tangent_arm_a = dd::torque(arm_a, tangent);
+  p.tangent_arm_b = dd::torque(arm_b, tangent);
+}
+
+/// An arm [m] from its cross products with the unit normal n and tangent t: r × t = r · n and
+/// r × n = −r · t, so r = (r × t) n − (r × n) t.
+inline Vec2 arm_from(const Vec2& normal, double normal_arm, double tangent_arm) {
+  return tangent_arm * normal - normal_arm * contact_tangent(normal);
+}
 
 /// The effective-mass matrix K of a two-point contact's normal constraints [1/kg]: entry (i, j)
 /// is the change of v_rel·n at point i per unit normal impulse at point j, the diagonal being
@@ -61,9 +85,9 @@ struct Contact {
   std::uint32_t shape_b;
   BodyId body_a;
   BodyId body_b;
-  Vec2 normal;  ///< unit, world, from B towards A
-  double restitution;  ///< C_R = max of the two shapes'
-  double friction;     ///< μ = √(μ_a μ_b)
+  Vec2 normal;                ///< unit, world, from B towards A
+  double restitution;         ///< C_R = max of the two shapes'
+  double friction;            ///< μ = √(μ_a μ_b)
   std::uint32_t first_point;  ///< where the points start in the ContactSet
   int count;                  ///< of points: 1 or 2
   /// Of a two-point contact, where its NormalBlock is in the ContactSet, set up once per step so
@@ -73,5 +97,14 @@ struct Contact {
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
   std::uint64_t key() const { return key_of({shape_a, shape_b}); }
 };
+
+/// The arm [m] from A's centre of mass to point `p` of `c`.
+inline Vec2 arm_a(const Contact& c, const ContactPointState& p) {
+  return arm_from(c.normal, p.normal_arm_a, p.tangent_arm_a);
+}
+/// The arm [m] from B's centre of mass to point `p` of `c`.
+inline Vec2 arm_b(const Contact& c, const ContactPointState& p) {
+  return arm_from(c.normal, p.normal_arm_b, p.tangent_arm_b);
+}
 
 }  // namespace gp

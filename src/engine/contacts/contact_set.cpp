@@ -10,7 +10,9 @@ void ContactSet::clear() {
   blocks_.clear();
 }
 
-void ContactSet::reserve(std::size_t contacts) { reserve_for(contacts_, contacts); }
+void ContactSet::reserve(std::size_t contacts) {
+  reserve_for(contacts_, contacts);
+}
 
 Contact& ContactSet::append(int count) {
   reserve_for(points_, points_.size() + static_cast<std::size_t>(count));

@@ -5,9 +5,7 @@
 
 #include "engine/geometry/transform.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
-#include "gamephysics/models/dd/chasles_theorem.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
-#include "gamephysics/models/dd/relative_velocity.hpp"
 #include "gamephysics/models/dd/torque.hpp"
 #include "gamephysics/models/gd/collision_impulse.hpp"
 #include "gamephysics/models/im/collision_response.hpp"
@@ -16,10 +14,6 @@
 namespace gp {
 
 namespace {
-
-Vec2 tangent_of(const Vec2& normal) {
-  return {-normal.y(), normal.x()};
-}
 
 // Effective mass of the two bodies at a point along `direction` [kg]: GD:impulse with C_R = 0
 // gives, for a unit closing speed, exactly the impulse per unit change of speed.
@@ -48,14 +42,6 @@ Turns displace(const BodyInertia& m, const Contact& c, const Vec2& arm_a, const 
   s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
   s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b], turns.b);
   return turns;
-}
-
-// DD:chaslesThm, DD:reVeInColl: velocity of A's material point at p relative to B's [m/s].
-Vec2 point_relative_velocity(const Vec2& velocity_a, double angular_velocity_a,
-                             const Vec2& velocity_b, double angular_velocity_b,
-                             const ContactPointState& p) {
-  return dd::relative_velocity(dd::point_velocity(velocity_a, angular_velocity_a, p.arm_a),
-                               dd::point_velocity(velocity_b, angular_velocity_b, p.arm_b));
 }
 
 // v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m]
@@ -120,11 +106,6 @@ struct PairMotion {
 
 }  // namespace
 
-Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
-  return point_relative_velocity(s.velocity[c.body_a], s.angular_velocity[c.body_a],
-                                 s.velocity[c.body_b], s.angular_velocity[c.body_b], p);
-}
-
 double normal_coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
                        const ContactPointState& pj, const BodyInertia& m) {
   const double directions = ci.normal.dot(cj.normal);
@@ -146,7 +127,7 @@ void apply_contact_impulse(const Contact& c, const ContactPointState& p, double 
                            double tangent, const BodyInertia& inertia, MotionState& s) {
   PairMotion m(c, inertia, s);
   m.push_normal(c, p, normal);
-  m.push_tangent(tangent_of(c.normal), p, tangent);
+  m.push_tangent(contact_tangent(c.normal), p, tangent);
   m.store(c, s);
 }
 
@@ -202,7 +183,7 @@ double solve_contact(const ContactSet& contacts, const Contact& c,
   double largest_change = 0.0;
   if (c.friction > 0.0) {
     // Friction first, so the normal constraints, solved last, are the ones met exactly.
-    const Vec2 tangent = tangent_of(c.normal);
+    const Vec2 tangent = contact_tangent(c.normal);
     for (ContactPointState& p : points) {
       const double limit = c.friction * p.normal_impulse;
       const double change = -p.tangent_mass * m.tangent_velocity(tangent, p);
@@ -234,9 +215,9 @@ double solve_contact(const ContactSet& contacts, const Contact& c,
 double apply_collision_response(const Contact& c, const ContactPointState& p, double restitution,
                                 const BodyInertia& inertia, MotionState& s) {
   const im::CollidingBody body_a{inertia.inverse_mass[c.body_a], inertia.inverse_moment[c.body_a],
-                                 s.velocity[c.body_a], s.angular_velocity[c.body_a], p.arm_a};
+                                 s.velocity[c.body_a], s.angular_velocity[c.body_a], arm_a(c, p)};
   const im::CollidingBody body_b{inertia.inverse_mass[c.body_b], inertia.inverse_moment[c.body_b],
-                                 s.velocity[c.body_b], s.angular_velocity[c.body_b], p.arm_b};
+                                 s.velocity[c.body_b], s.angular_velocity[c.body_b], arm_b(c, p)};
   const auto r = im::collision_response(body_a, body_b, c.normal, restitution);
   s.velocity[c.body_a] = r.velocity_a;
   s.angular_velocity[c.body_a] = r.angular_velocity_a;
@@ -255,9 +236,7 @@ bool propagate_impacts(const ContactSet& contacts, const BodyInertia& inertia,
       if (c.restitution == 0.0) continue;
       for (const ContactPointState& p : contacts.points(c)) {
         if (p.depth <= -settings.linear_slop) continue;
-        if (contact_relative_velocity(s, c, p).dot(c.normal) >= -settings.restitution_threshold) {
-          continue;
-        }
+        if (contact_normal_velocity(s, c, p) >= -settings.restitution_threshold) continue;
         apply_collision_response(c, p, c.restitution, inertia, s);
         struck = any = true;
       }
@@ -287,20 +266,18 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const Con
 
 }  // namespace
 
-void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia,
-                      const MotionState& before, double h, const Settings& settings) {
+void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia, const MotionState& before,
+                      double h, const Settings& settings) {
   contacts.clear_blocks();
   for (Contact& c : contacts) {
-    const Vec2 tangent = tangent_of(c.normal);
+    const Vec2 tangent = contact_tangent(c.normal);
     const std::span<ContactPointState> points = contacts.points(c);
     for (ContactPointState& p : points) {
-      p.normal_arm_a = dd::torque(p.arm_a, c.normal);
-      p.normal_arm_b = dd::torque(p.arm_b, c.normal);
-      p.tangent_arm_a = dd::torque(p.arm_a, tangent);
-      p.tangent_arm_b = dd::torque(p.arm_b, tangent);
-      p.normal_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, c.normal);
-      p.tangent_mass = effective_mass(inertia, c, p.arm_a, p.arm_b, tangent);
-      const double approach = contact_relative_velocity(before, c, p).dot(c.normal);
+      const Vec2 arm_a = gp::arm_a(c, p);
+      const Vec2 arm_b = gp::arm_b(c, p);
+      p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
+      p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
+      const double approach = contact_normal_velocity(before, c, p);
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
       // A speculative point (still apart) bounces too if the solver ends up pushing on it:
       // apply_restitution acts only where the normal impulse is positive.
@@ -315,7 +292,7 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
     PairMotion m(c, inertia, s);
     for (const ContactPointState& p : contacts.points(c)) {
       m.push_normal(c, p, p.normal_impulse);
-      m.push_tangent(tangent_of(c.normal), p, p.tangent_impulse);
+      m.push_tangent(contact_tangent(c.normal), p, p.tangent_impulse);
     }
     m.store(c, s);
   }
@@ -338,8 +315,9 @@ double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& ine
 void move_by_impulses(const ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
                       double duration, MotionState& s) {
   for (const ContactPointState& p : contacts.points(c)) {
-    const Vec2 impulse = p.normal_impulse * c.normal + p.tangent_impulse * tangent_of(c.normal);
-    displace(inertia, c, p.arm_a, p.arm_b, duration * impulse, s);
+    const Vec2 impulse =
+        p.normal_impulse * c.normal + p.tangent_impulse * contact_tangent(c.normal);
+    displace(inertia, c, arm_a(c, p), arm_b(c, p), duration * impulse, s);
   }
 }
 
@@ -380,9 +358,9 @@ void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& ine
   for (const Contact& c : contacts) move_by_impulses(contacts, c, inertia, duration, s);
 }
 
-void solve_speculative(ContactSet& resting, ContactSet& speculative,
-                       const BodyInertia& inertia, const MotionState& before, double h,
-                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch) {
+void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyInertia& inertia,
+                       const MotionState& before, double h, const Settings& settings,
+                       MotionState& s, SpeculativeScratch& scratch) {
   // An impact's impulse fades as it spreads through a heap: the resting contacts up to this many
   // contacts away from it are solved with it, the rest of the heap holds still for it.
   constexpr int kReach = 2;
@@ -425,8 +403,8 @@ void RotationCache::reset(std::size_t bodies) {
   rotation_.resize(bodies);
 }
 
-void correct_positions(const ContactSet& contacts, const BodyInertia& inertia,
-                       int iterations, double slop, MotionState& s, RotationCache& rotations) {
+void correct_positions(const ContactSet& contacts, const BodyInertia& inertia, int iterations,
+                       double slop, MotionState& s, RotationCache& rotations) {
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());

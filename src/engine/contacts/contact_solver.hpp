@@ -22,22 +22,18 @@ struct BodyInertia {
   std::vector<double> inverse_moment;
 };
 
-/// Velocity of A's material point relative to B's at contact point `p` of `c` in state `s`
-/// [m/s] (DD:chaslesThm, DD:reVeInColl).
-Vec2 contact_relative_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
-
 /// An entry K_ij of the effective-mass matrix of contact points [1/kg]: the change of point i's
 /// v_rel·n per unit normal impulse at point j, summed over the bodies the two points share, A
-/// counting + and B − (GD:impulse's denominator when i = j). Uses the arms that prepare_contacts
-/// set up.
+/// counting + and B − (GD:impulse's denominator when i = j).
 double normal_coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
                        const ContactPointState& pj, const BodyInertia& m);
 
-/// v_rel·n at point `p` of `c` in state `s` [m/s], from the arms that prepare_contacts set up.
+/// v_rel·n at point `p` of `c` in state `s` [m/s]: the normal component of the velocity of A's
+/// material point relative to B's (DD:chaslesThm, DD:reVeInColl).
 double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
 
 /// Applies the impulse `normal` n + `tangent` t [N·s] at point `p` to A and the reaction to B
-/// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot), with the arms that prepare_contacts set up.
+/// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot), with the point's arms.
 void apply_contact_impulse(const Contact& c, const ContactPointState& p, double normal,
                            double tangent, const BodyInertia& inertia, MotionState& s);
 
@@ -59,8 +55,8 @@ bool propagate_impacts(const ContactSet& contacts, const BodyInertia& inertia,
 /// speed that just closes the gap for points still apart, else 0; and, for touching points
 /// approaching faster than the restitution threshold, that approach velocity v_n (measured in
 /// `before`, the state before the step's forces) for apply_restitution.
-void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia,
-                      const MotionState& before, double h, const Settings& settings);
+void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia, const MotionState& before,
+                      double h, const Settings& settings);
 
 /// Applies the carried-over impulses of every point to the velocities of `s`.
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
@@ -100,9 +96,9 @@ struct SpeculativeScratch {
 /// impact on, so they move the bodies by h × Δv, which closes each gap exactly, rather than by
 /// the resting share, which would leave a fast body overlapping and press the body under it
 /// into the ground.
-void solve_speculative(ContactSet& resting, ContactSet& speculative,
-                       const BodyInertia& inertia, const MotionState& before, double h,
-                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch);
+void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyInertia& inertia,
+                       const MotionState& before, double h, const Settings& settings,
+                       MotionState& s, SpeculativeScratch& scratch);
 
 /// The rotations of bodies by their current angles, each computed only when first asked for, and
 /// after a small turn updated without trigonometry: most contact points of discs need none, and
@@ -143,7 +139,7 @@ class RotationCache {
 /// contact points overlap by more than `slop` [m], removing a fifth of the excess per pass
 /// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops.
 /// `rotations` is scratch, kept by the caller so that a step does not allocate.
-void correct_positions(const ContactSet& contacts, const BodyInertia& inertia,
-                       int iterations, double slop, MotionState& s, RotationCache& rotations);
+void correct_positions(const ContactSet& contacts, const BodyInertia& inertia, int iterations,
+                       double slop, MotionState& s, RotationCache& rotations);
 
 }  // namespace gp

@@ -138,7 +138,7 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
     append_contact(p, shapes, m, s, contacts);
   }
   const auto approach = [&s](const Contact& c, const ContactPointState& p) {
-    return contact_relative_velocity(s, c, p).dot(c.normal);
+    return contact_normal_velocity(s, c, p);
   };
   if (contacts.size() == 1 && contacts[0].count == 1 && contacts[0].friction == 0.0) {
     // One frictionless point: IM:col2D exactly.
@@ -147,8 +147,7 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
     const double restitution =
         approach(c, p) < -settings.restitution_threshold ? c.restitution : 0.0;
     const double impulse = apply_collision_response(c, p, restitution, inertia, s);
-    log.push_back(
-        {t, c.body_a, c.body_b, c.normal, p.arm_a + s.position[c.body_a], impulse});
+    log.push_back({t, c.body_a, c.body_b, c.normal, arm_a(c, p) + s.position[c.body_a], impulse});
     return;
   }
   // An impact takes no time: no gap to close, only the restitution targets.
@@ -160,7 +159,7 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
     Vec2 point = Vec2::Zero();
     double impulse = 0.0;
     for (const ContactPointState& p : contacts.points(c)) {
-      point += (p.arm_a + s.position[c.body_a]) / c.count;
+      point += (arm_a(c, p) + s.position[c.body_a]) / c.count;
       impulse += p.normal_impulse;
     }
     log.push_back({t, c.body_a, c.body_b, c.normal, point, impulse});

@@ -21,8 +21,7 @@ bool movable(const BodyInertia& m, BodyId body) {
 
 // Groups the contacts by island into scratch.order; scratch.island_start and scratch.points,
 // indexed by an island's root body, give each island's first entry and its number of points.
-void find_islands(const ContactSet& contacts, const BodyInertia& inertia,
-                  IslandScratch& scratch) {
+void find_islands(const ContactSet& contacts, const BodyInertia& inertia, IslandScratch& scratch) {
   const std::size_t bodies = inertia.inverse_mass.size();
   scratch.parent.resize(bodies);
   std::iota(scratch.parent.begin(), scratch.parent.end(), BodyId{0});
@@ -132,8 +131,8 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const 
 
 }  // namespace
 
-int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia,
-                        std::size_t max_points, MotionState& s, IslandScratch& scratch) {
+int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::size_t max_points,
+                        MotionState& s, IslandScratch& scratch) {
   if (contacts.empty() || max_points == 0) return 0;
   find_islands(contacts, inertia, scratch);
   const auto size = static_cast<Eigen::Index>(max_points);

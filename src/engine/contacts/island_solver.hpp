@@ -45,7 +45,7 @@ struct IslandScratch {
 /// and no free point closes); an island where that does not settle keeps the sequential
 /// impulses' result. Applies the changes to the velocities of `s` (DD:impulseV, DD:torque,
 /// TM:NewtonThirdLawMot). Returns the number of islands solved.
-int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia,
-                        std::size_t max_points, MotionState& s, IslandScratch& scratch);
+int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::size_t max_points,
+                        MotionState& s, IslandScratch& scratch);
 
 }  // namespace gp

@@ -45,7 +45,7 @@ bool LocalImpacts::touching(const ContactSet& contacts, const Contact& c) const 
 bool LocalImpacts::engaged(const ContactSet& contacts, const Contact& c, const MotionState& s,
                            double h) const {
   for (const ContactPointState& p : contacts.points(c)) {
-    const double closing = -contact_relative_velocity(s, c, p).dot(c.normal) * h;  // m
+    const double closing = -contact_normal_velocity(s, c, p) * h;  // m
     if (p.depth + std::max(closing, 0.0) > -settings_.linear_slop) return true;
   }
   return false;

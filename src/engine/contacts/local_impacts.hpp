@@ -37,8 +37,8 @@ class LocalImpacts {
   /// thereby added, until no pending impact touches a body of the contact solver; a body takes part
   /// when one of its contacts is engaged over the step of h [s]. The other contacts of bodies left
   /// with impacts are dropped: the impacts' own search covers them.
-  void hand_over(const WorldShapes& start, const MotionState& s, double h,
-                 ContactSet& contacts, ContactSet& speculative);
+  void hand_over(const WorldShapes& start, const MotionState& s, double h, ContactSet& contacts,
+                 ContactSet& speculative);
 
   /// Resolves the remaining impacts in time order, each at its t_c = t + τ, and logs them in
   /// `log` (at most `max_impacts` - `impacts` of them; `impacts` counts them). Each body an
