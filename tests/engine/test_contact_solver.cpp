@@ -81,3 +81,40 @@ TEST_CASE("A frame turned slightly agrees with one built from the new angle", "[
          gp::Transform({1.0, 2.0}, 2.6).rotate({1.0, 0.0}))
             .norm() > 1e-7);
 }
+
+TEST_CASE("A point's arms come back from their cross products with the normal and tangent",
+          "[DD:torque]") {
+  for (double angle : {0.0, 0.7, 2.0, -2.9}) {
+    gp::Contact c{};
+    c.normal = {std::cos(angle), std::sin(angle)};
+    gp::ContactPointState p;
+    const gp::Vec2 arm_a{0.3, -1.7};
+    const gp::Vec2 arm_b{-2.5, 0.4};
+    gp::set_arms(p, c.normal, arm_a, arm_b);
+    CHECK((gp::arm_a(c, p) - arm_a).norm() < 1e-15);
+    CHECK((gp::arm_b(c, p) - arm_b).norm() < 1e-15);
+    // The cross product with the normal is the torque of a unit normal impulse: r_x n_y − r_y n_x.
+    CHECK(p.normal_arm_a == Approx(arm_a.x() * c.normal.y() - arm_a.y() * c.normal.x()));
+  }
+}
+
+TEST_CASE("Dropping contacts from a set keeps each remaining contact with its own points",
+          "[FR:Determine-Collisions]") {
+  gp::ContactSet set;
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    const int count = i % 2 == 0 ? 2 : 1;
+    gp::Contact& c = set.append(count);
+    c.shape_a = i;
+    for (int k = 0; k < count; ++k) set.points(c)[k].depth = 10.0 * i + k;
+  }
+  CHECK(set.point_count() == 8);
+  set.erase_if([](const gp::Contact& c) { return c.shape_a == 0 || c.shape_a == 3; });
+  REQUIRE(set.size() == 3);
+  CHECK(set.point_count() == 5);
+  for (const gp::Contact& c : set) {
+    REQUIRE(set.points(c).size() == (c.shape_a % 2 == 0 ? 2u : 1u));
+    for (std::size_t k = 0; k < set.points(c).size(); ++k) {
+      CHECK(set.points(c)[k].depth == 10.0 * c.shape_a + static_cast<double>(k));
+    }
+  }
+}
