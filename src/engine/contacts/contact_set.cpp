@@ -19,7 +19,7 @@ Contact& ContactSet::append(int count) {
   Contact& c = contacts_.emplace_back();
   c.first_point = static_cast<std::uint32_t>(points_.size());
   c.count = count;
-  points_.resize(points_.size() + static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) points_.emplace_back();
   return c;
 }
 

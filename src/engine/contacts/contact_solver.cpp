@@ -30,13 +30,13 @@ struct Turns {
   double b;
 };
 
-// Moves and turns A by the positional impulse `shift` [kg·m] at its arm and B by the reaction
-// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot applied to displacements instead of velocities).
-Turns displace(const BodyInertia& m, const Contact& c, const Vec2& arm_a, const Vec2& arm_b,
-               const Vec2& shift, MotionState& s) {
+// Moves A by the positional impulse `shift` [kg·m] and B by the reaction, and turns each by the
+// moment of its share about its centre of mass [kg·m²] (DD:impulseV, DD:torque,
+// TM:NewtonThirdLawMot applied to displacements instead of velocities).
+Turns displace(const BodyInertia& m, const Contact& c, const Vec2& shift, double moment_a,
+               double moment_b, MotionState& s) {
   const Vec2 back = tm::reaction_force(shift);
-  const Turns turns{dd::torque(arm_a, shift) * m.inverse_moment[c.body_a],
-                    dd::torque(arm_b, back) * m.inverse_moment[c.body_b]};
+  const Turns turns{moment_a * m.inverse_moment[c.body_a], moment_b * m.inverse_moment[c.body_b]};
   s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
   s.angle[c.body_a] = dd::rotated_orientation(s.angle[c.body_a], turns.a);
   s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
@@ -315,9 +315,12 @@ double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& ine
 void move_by_impulses(const ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
                       double duration, MotionState& s) {
   for (const ContactPointState& p : contacts.points(c)) {
-    const Vec2 impulse =
-        p.normal_impulse * c.normal + p.tangent_impulse * contact_tangent(c.normal);
-    displace(inertia, c, arm_a(c, p), arm_b(c, p), duration * impulse, s);
+    const double normal = duration * p.normal_impulse;
+    const double tangent = duration * p.tangent_impulse;
+    // The moment of j_n n + j_t t at arm r is j_n (r × n) + j_t (r × t) (DD:torque).
+    displace(inertia, c, normal * c.normal + tangent * contact_tangent(c.normal),
+             normal * p.normal_arm_a + tangent * p.tangent_arm_a,
+             -(normal * p.normal_arm_b + tangent * p.tangent_arm_b), s);
   }
 }
 
@@ -425,8 +428,9 @@ void correct_positions(const ContactSet& contacts, const BodyInertia& inertia, i
         deep = deep || separation < -2.0 * slop;
         // The impulses' effective mass, applied to a displacement instead of a velocity; set up
         // for the step's arms, which the small turns of these passes barely change.
-        const Turns turns =
-            displace(inertia, c, arm_a, arm_b, -excess * p.normal_mass * c.normal, s);
+        const Vec2 shift = -excess * p.normal_mass * c.normal;
+        const Turns turns = displace(inertia, c, shift, dd::torque(arm_a, shift),
+                                     dd::torque(arm_b, tm::reaction_force(shift)), s);
         rotations.turn(c.body_a, s.angle[c.body_a], turns.a);
         rotations.turn(c.body_b, s.angle[c.body_b], turns.b);
       }
