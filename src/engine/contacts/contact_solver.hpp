@@ -110,7 +110,7 @@ class RotationCache {
   /// `body` was turned by `turn` [rad] to `angle` [rad]: its rotation follows, or is forgotten
   /// after a turn too large for the series.
   void turn(BodyId body, double angle, double turn) {
-    // Beyond this, the series of Transform::turned_slightly errs by more than 1e-13 rad.
+    // Beyond this, the series of Rotation::turned_slightly errs by more than 1e-13 rad.
     constexpr double kSmallTurn = 1e-3;
     if (std::isnan(angle_[body]) || turn == 0.0) return;
     if (std::abs(turn) > kSmallTurn) {
@@ -125,14 +125,14 @@ class RotationCache {
     if (v.x() == 0.0 && v.y() == 0.0) return v;  // a disc's centre: no trigonometry
     if (angle_[body] != angle) {
       angle_[body] = angle;
-      rotation_[body] = Transform(Vec2::Zero(), angle);
+      rotation_[body] = Rotation(angle);
     }
     return rotation_[body].rotate(v);
   }
 
  private:
   std::vector<double> angle_;  // rad, the angle each rotation is for; NaN: none yet
-  std::vector<Transform> rotation_;
+  std::vector<Rotation> rotation_;
 };
 
 /// At most `iterations` passes that move and turn bodies apart (positions only) where the

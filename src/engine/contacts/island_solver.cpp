@@ -41,20 +41,21 @@ void find_islands(const ContactSet& contacts, const BodyInertia& inertia, Island
   scratch.points.assign(bodies, 0);
   scratch.island_start.assign(bodies, 0);
   scratch.cursor.assign(bodies, 0);
-  std::vector<std::size_t>& counts = scratch.cursor;
+  std::vector<std::uint32_t>& counts = scratch.cursor;
   for (const Contact& c : contacts) {
     const BodyId r = root(c);
-    scratch.points[r] += static_cast<std::size_t>(c.count);
+    scratch.points[r] += static_cast<std::uint32_t>(c.count);
     ++counts[r];
   }
-  std::size_t next = 0;
+  std::uint32_t next = 0;
   for (std::size_t r = 0; r < bodies; ++r) {
     scratch.island_start[r] = next;
     next += counts[r];
     counts[r] = scratch.island_start[r];
   }
   scratch.order.resize(contacts.size());
-  for (std::size_t i = 0; i < contacts.size(); ++i) scratch.order[counts[root(contacts[i])]++] = i;
+  for (std::uint32_t i = 0; i < contacts.size(); ++i)
+    scratch.order[counts[root(contacts[i])]++] = i;
 }
 
 // The active-set method of solve_small_islands on scratch.rows; leaves the new normal impulses in
@@ -153,10 +154,9 @@ int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::s
   for (std::size_t r = 0; r < bodies; ++r) {
     if (scratch.points[r] == 0 || scratch.points[r] > max_points) continue;
     scratch.rows.clear();
-    const std::size_t first = scratch.island_start[r];
-    for (std::size_t e = first; e < scratch.cursor[r]; ++e) {
+    for (std::uint32_t e = scratch.island_start[r]; e < scratch.cursor[r]; ++e) {
       for (int k = 0; k < contacts[scratch.order[e]].count; ++k) {
-        scratch.rows.push_back({scratch.order[e], k});
+        scratch.rows.push_back({scratch.order[e], static_cast<std::uint32_t>(k)});
       }
     }
     if (!solve_island(contacts, inertia, s, scratch)) continue;

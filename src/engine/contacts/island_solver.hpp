@@ -17,14 +17,15 @@ namespace gp {
 /// Scratch for solve_small_islands, kept by the caller so that a step does not allocate once it
 /// has grown to the scene.
 struct IslandScratch {
-  std::vector<BodyId> parent;             // per body: union-find forest of the islands
-  std::vector<std::size_t> points;        // per island root: its number of points
-  std::vector<std::size_t> order;         // contact indices, grouped by island
-  std::vector<std::size_t> island_start;  // per island root: its first entry in `order`
-  std::vector<std::size_t> cursor;        // per island root: filling `order`
+  std::vector<BodyId> parent;  // per body: union-find forest of the islands
+  // 32-bit counts and indices: these arrays are per body and per contact.
+  std::vector<std::uint32_t> points;        // per island root: its number of points
+  std::vector<std::uint32_t> order;         // contact indices, grouped by island
+  std::vector<std::uint32_t> island_start;  // per island root: its first entry in `order`
+  std::vector<std::uint32_t> cursor;        // per island root: filling `order`
   struct Row {
-    std::size_t contact;
-    int point;
+    std::uint32_t contact;
+    std::uint32_t point;
   };
   std::vector<Row> rows;  // the island's points
   Eigen::MatrixXd k;      // 1/kg: effective-mass matrix of the island's points

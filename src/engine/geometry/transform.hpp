@@ -7,6 +7,39 @@
 
 namespace gp {
 
+/// A rotation by an angle (rad, counter-clockwise), kept as its cosine and sine so that turning
+/// many vectors by it costs no trigonometry per vector.
+class Rotation {
+ public:
+  /// The identity.
+  Rotation() = default;
+  explicit Rotation(double angle) : cos_(std::cos(angle)), sin_(std::sin(angle)) {}
+
+  /// A direction (e.g. a unit normal) turned from body to world axes.
+  Vec2 rotate(const Vec2& v) const {
+    return {cos_ * v.x() - sin_ * v.y(), sin_ * v.x() + cos_ * v.y()};
+  }
+  /// A direction turned from world to body axes: the inverse of rotate().
+  Vec2 unrotate(const Vec2& v) const {
+    return {cos_ * v.x() + sin_ * v.y(), -sin_ * v.x() + cos_ * v.y()};
+  }
+
+  /// This rotation turned further by `turn` (rad, |turn| ≤ 1e-3) without trigonometry: sin and
+  /// cos of the turn from their series to third order, which err by at most 1e-13.
+  Rotation turned_slightly(double turn) const {
+    const double c = 1.0 - 0.5 * turn * turn;
+    const double s = turn - turn * turn * turn / 6.0;
+    Rotation r;
+    r.cos_ = cos_ * c - sin_ * s;
+    r.sin_ = sin_ * c + cos_ * s;
+    return r;
+  }
+
+ private:
+  double cos_ = 1.0;
+  double sin_ = 0.0;
+};
+
 /// Rotation by `angle` (rad, counter-clockwise) followed by a translation to `position` (m).
 /// The engine puts a body frame's origin at the body's centre of mass, so `position` is the
 /// centre of mass in world coordinates and shape coordinates are relative to it.
@@ -18,7 +51,7 @@ class Transform {
   /// leaves in place (a disc about its centre).
   explicit Transform(const Vec2& position) : position_(position) {}
   Transform(const Vec2& position, double angle)
-      : position_(position), angle_(angle), cos_(std::cos(angle)), sin_(std::sin(angle)) {}
+      : position_(position), angle_(angle), rotation_(angle) {}
 
   /// m, world.
   const Vec2& position() const { return position_; }
@@ -26,34 +59,16 @@ class Transform {
   double angle() const { return angle_; }
 
   /// A direction (e.g. a unit normal) turned from body to world axes; no translation.
-  Vec2 rotate(const Vec2& v) const {
-    return {cos_ * v.x() - sin_ * v.y(), sin_ * v.x() + cos_ * v.y()};
-  }
+  Vec2 rotate(const Vec2& v) const { return rotation_.rotate(v); }
   /// A direction turned from world to body axes: the inverse of rotate().
-  Vec2 unrotate(const Vec2& v) const {
-    return {cos_ * v.x() + sin_ * v.y(), -sin_ * v.x() + cos_ * v.y()};
-  }
+  Vec2 unrotate(const Vec2& v) const { return rotation_.unrotate(v); }
   /// A point (m) mapped from body to world coordinates.
   Vec2 apply(const Vec2& p) const { return position_ + rotate(p); }
-
-  /// This frame turned further by `turn` (rad, |turn| ≤ 1e-3) without trigonometry: sin and cos
-  /// of the turn from their series to third order, which err by at most 1e-13.
-  Transform turned_slightly(double turn) const {
-    const double c = 1.0 - 0.5 * turn * turn;
-    const double s = turn - turn * turn * turn / 6.0;
-    Transform t = *this;
-    t.angle_ = angle_ + turn;
-    t.cos_ = cos_ * c - sin_ * s;
-    t.sin_ = sin_ * c + cos_ * s;
-    return t;
-  }
 
  private:
   Vec2 position_ = Vec2::Zero();
   double angle_ = 0.0;
-  // Cached so that placing a polygon costs no trigonometry per vertex.
-  double cos_ = 1.0;
-  double sin_ = 0.0;
+  Rotation rotation_;
 };
 
 }  // namespace gp
