@@ -165,7 +165,8 @@ bool solve_pair(const Contact& c, const NormalBlock& k, ContactPointState& p, Co
 // Whether a pass over `c` would change nothing: no point pushes or rubs yet, and none would
 // have to, because each already separates at least as fast as its target asks (a speculative
 // point whose gap the step does not close). Friction cannot act without a normal impulse.
-bool idle(const Contact& c, std::span<const ContactPointState> points, const PairMotion& m) {
+template <std::size_t N>
+bool idle(const Contact& c, std::span<ContactPointState, N> points, const PairMotion& m) {
   for (const ContactPointState& p : points) {
     if (p.normal_impulse != 0.0 || p.tangent_impulse != 0.0 ||
         m.normal_velocity(c, p) < p.target_normal_velocity) {
@@ -175,10 +176,13 @@ bool idle(const Contact& c, std::span<const ContactPointState> points, const Pai
   return true;
 }
 
-// One pass of sequential impulses over the points of `c`: friction, then the normal constraints.
-// Returns the largest change of an accumulated impulse in the pass [N·s].
+// One pass of sequential impulses over the N points of `c`: friction, then the normal
+// constraints. Returns the largest change of an accumulated impulse in the pass [N·s]. N is a
+// template parameter so that the loops over the points unroll: a pass's cost per contact is mostly
+// such bookkeeping.
+template <std::size_t N>
 double solve_contact(const ContactSet& contacts, const Contact& c,
-                     std::span<ContactPointState> points, PairMotion& m) {
+                     std::span<ContactPointState, N> points, PairMotion& m) {
   if (idle(c, points, m)) return 0.0;
   double largest_change = 0.0;
   if (c.friction > 0.0) {
@@ -193,7 +197,7 @@ double solve_contact(const ContactSet& contacts, const Contact& c,
       p.tangent_impulse = total;
     }
   }
-  if (c.count == 2) {
+  if constexpr (N == 2) {
     const Vec2 old{points[0].normal_impulse, points[1].normal_impulse};
     if (solve_pair(c, contacts.block(c), points[0], points[1], m)) {
       return std::max({largest_change, std::abs(points[0].normal_impulse - old.x()),
@@ -305,10 +309,11 @@ namespace {
 double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
                   MotionState& s) {
   PairMotion m(c, inertia, s);
-  const double change =
-      solve_contact(contacts, c, contacts.points(c), m) * (m.inverse_mass_a + m.inverse_mass_b);
+  const std::span<ContactPointState> points = contacts.points(c);
+  const double impulse_change = c.count == 1 ? solve_contact(contacts, c, points.first<1>(), m)
+                                             : solve_contact(contacts, c, points.first<2>(), m);
   m.store(c, s);
-  return change;
+  return impulse_change * (m.inverse_mass_a + m.inverse_mass_b);
 }
 
 // move_by_contact_impulses for one contact.
