@@ -81,6 +81,7 @@ TEST_CASE("Every engine runs a workload and the summary gives medians and ratios
     run.iterations = 1;
     run.real_accumulated_time = ms / 1e3;
     run.counters["moved_m"] = 0.25;
+    run.counters["heap_bytes"] = 2048.0;
     runs.push_back(run);
   }
   const std::vector<gp::bench::Workload> list{{"w", scene, 100, gp::BodyId{0}}};
@@ -92,6 +93,7 @@ TEST_CASE("Every engine runs a workload and the summary gives medians and ratios
   CHECK(all[0].stddev_ms == Approx(10.0));
   CHECK(all[0].body_steps_per_s == Approx(4 * 100 / 0.020));
   CHECK(all[1].moved_m == 0.25);
+  CHECK(all[1].heap_bytes == 2048.0);
   std::ostringstream out;
   gp::bench::print_summary(out, all);
   CHECK_THAT(out.str(), Catch::Contains("4.00"));  // ours/chipmunk: 20 ms / 5 ms
@@ -121,4 +123,26 @@ TEST_CASE("The summary reads the statistics when only those were displayed", "[N
   CHECK(all[0].max_ms == Approx(30.0));
   CHECK(all[0].stddev_ms == Approx(4.0));
   CHECK(all[0].moved_m < 0.0);
+}
+
+TEST_CASE("The summary gives each engine's heap per disc added from rain1000 to rain4000",
+          "[NFR:Performance]") {
+  const auto with_heap = [](const char* workload, const char* engine, double bytes) {
+    gp::bench::Figures f{workload, engine, 1};
+    f.heap_bytes = bytes;
+    return f;
+  };
+  // 3000 discs more take 3 MB more in ours: 1000 B each. Box2D has no rain4000 figure, and
+  // Chipmunk2D's rain4000 was not measured (negative), so neither gets a figure.
+  const std::vector<gp::bench::Figures> all{
+      with_heap("rain1000", "ours", 1.5e6), with_heap("rain1000", "chipmunk", 2e6),
+      with_heap("rain1000", "box2d", 1e6), with_heap("rain4000", "ours", 4.5e6),
+      with_heap("rain4000", "chipmunk", -1.0)};
+  const auto per_body = gp::bench::heap_per_added_body(all);
+  REQUIRE(per_body.size() == 1);
+  CHECK(per_body[0].first == "ours");
+  CHECK(per_body[0].second == Approx(1000.0));
+  std::ostringstream out;
+  gp::bench::print_summary(out, all);
+  CHECK_THAT(out.str(), Catch::Contains("rain4000 (held at the end of the run): ours 1000 B\n"));
 }

@@ -15,11 +15,13 @@ namespace {
 
 void run_workload(benchmark::State& state, const Workload& w, Engine engine) {
   double moved = 0.0;
+  double heap = 0.0;
   try {
     for (auto _ : state) {
       const TimedRun run = time_run(w, engine);
       state.SetIterationTime(run.seconds);
       moved = run.moved_m;
+      heap = run.heap_bytes;
     }
   } catch (const std::exception& e) {  // NumericalError: a state became non-finite
     state.SkipWithError(e.what());
@@ -29,6 +31,7 @@ void run_workload(benchmark::State& state, const Workload& w, Engine engine) {
   state.counters[kBodyStepsCounter] =
       benchmark::Counter(body_steps, benchmark::Counter::kIsIterationInvariantRate);
   if (w.watched) state.counters[kMovedCounter] = moved;
+  state.counters[kHeapCounter] = heap;
 }
 
 double smallest(const std::vector<double>& v) {

@@ -12,6 +12,8 @@ namespace gp::bench {
 inline constexpr const char* kMovedCounter = "moved_m";
 /// The name of the counter of body-steps per second of wall time.
 inline constexpr const char* kBodyStepsCounter = "body_steps_per_s";
+/// Counter of each run: the heap the engine held at its end [bytes] (TimedRun::heap_bytes).
+inline constexpr const char* kHeapCounter = "heap_bytes";
 
 /// Registers "<workload>/<engine>" for each workload and engine, the engines of a workload one
 /// after another (ours, chipmunk, box2d), each as 1 iteration per repetition with the wall-clock

@@ -48,6 +48,23 @@ std::optional<double> ours_over_engine(const std::vector<Figures>& all, const Fi
   return std::nullopt;
 }
 
+std::vector<std::pair<std::string, double>> heap_per_added_body(const std::vector<Figures>& all) {
+  const auto heap_of = [&all](const std::string& workload, const std::string& engine) {
+    for (const Figures& f : all) {
+      if (f.workload == workload && f.engine == engine && f.heap_bytes >= 0.0) return f.heap_bytes;
+    }
+    return -1.0;
+  };
+  std::vector<std::pair<std::string, double>> per_body;
+  for (const Figures& f : all) {
+    if (f.workload != "rain1000") continue;
+    const double small = heap_of("rain1000", f.engine);
+    const double large = heap_of("rain4000", f.engine);
+    if (small >= 0.0 && large >= 0.0) per_body.emplace_back(f.engine, (large - small) / 3000.0);
+  }
+  return per_body;
+}
+
 double body_steps_per_s(const Workload& w, double ms) {
   return static_cast<double>(w.scene.bodies.size()) * w.steps / (ms / 1e3);
 }

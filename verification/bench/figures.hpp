@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "verification/bench/workloads.hpp"
@@ -19,7 +20,8 @@ struct Figures {
   std::size_t repetitions = 0;
   double median_ms = 0.0, min_ms = 0.0, max_ms = 0.0, stddev_ms = 0.0;
   double body_steps_per_s = 0.0;
-  double moved_m = -1.0;  ///< negative when the workload watches no body
+  double moved_m = -1.0;     ///< negative when the workload watches no body
+  double heap_bytes = -1.0;  ///< held at the end of a run; negative when not measured
 };
 
 /// The figures of the repetitions of `w` in `engine` that took `ms` (not empty) each.
@@ -29,6 +31,11 @@ Figures figures_of(const Workload& w, std::string engine, const std::vector<doub
 /// Our median of f's workload over f's median (above 1: ours is slower; 1 on our own row), absent
 /// when `all` has no figures of ours for that workload.
 std::optional<double> ours_over_engine(const std::vector<Figures>& all, const Figures& f);
+
+/// The heap each engine holds per body added from rain1000 to rain4000 [bytes]: the difference of
+/// their heaps over the 3000 discs between them, which cancels what does not grow with the
+/// bodies. One entry per engine that has heap figures of both, in the order of `all`.
+std::vector<std::pair<std::string, double>> heap_per_added_body(const std::vector<Figures>& all);
 
 /// Bodies (static ones included, as every engine steps them) times steps, per second of a run of
 /// `w` that took `ms`.

@@ -19,6 +19,7 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
     std::map<std::string, double> statistic;  // "median", "min", "max", "stddev" [ms]
     std::int64_t repetitions = 0;
     double moved_m = -1.0;
+    double heap_bytes = -1.0;
   };
   std::map<std::string, Measured> by_name;
   for (const auto& run : runs) {
@@ -36,6 +37,9 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
         typical && moved != run.counters.end()) {
       m.moved_m = moved->second;
     }
+    if (const auto heap = run.counters.find(kHeapCounter); typical && heap != run.counters.end()) {
+      m.heap_bytes = heap->second;
+    }
   }
   std::vector<Figures> all;
   for (const Workload& w : list) {
@@ -46,6 +50,7 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
       const Measured& m = found->second;
       if (!m.ms.empty()) {
         all.push_back(figures_of(w, label, m.ms, m.moved_m));
+        all.back().heap_bytes = m.heap_bytes;
         continue;
       }
       Figures f{w.name, label, static_cast<std::size_t>(m.repetitions)};
@@ -55,6 +60,7 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
       f.stddev_ms = m.statistic.at("stddev");
       f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
       f.moved_m = m.moved_m;
+      f.heap_bytes = m.heap_bytes;
       all.push_back(std::move(f));
     }
   }
@@ -63,23 +69,34 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
 
 void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   out << "\nSummary: wall time of one whole run [ms]; ours/engine = our median / the engine's "
-         "(above 1: ours is slower)\n";
-  char line[160];
-  std::snprintf(line, sizeof line, "%-10s %-9s %4s %10s %10s %10s %9s %11s %14s\n", "workload",
-                "engine", "reps", "median", "min", "max", "stddev", "ours/engine", "body-steps/s");
+         "(above 1: ours is slower); heap the engine holds at the end of a run [KiB]\n";
+  char line[180];
+  std::snprintf(line, sizeof line, "%-10s %-9s %4s %10s %10s %10s %9s %11s %14s %10s\n", "workload",
+                "engine", "reps", "median", "min", "max", "stddev", "ours/engine", "body-steps/s",
+                "heap");
   out << line;
   for (const Figures& f : all) {
     const auto ratio_value = ours_over_engine(all, f);
     const std::string ratio = ratio_value ? formatted("%.2f", *ratio_value) : "-";
-    std::snprintf(line, sizeof line, "%-10s %-9s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g\n",
+    const std::string heap = f.heap_bytes >= 0.0 ? formatted("%.0f", f.heap_bytes / 1024) : "-";
+    std::snprintf(line, sizeof line,
+                  "%-10s %-9s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s\n",
                   f.workload.c_str(), f.engine.c_str(), f.repetitions, f.median_ms, f.min_ms,
-                  f.max_ms, f.stddev_ms, ratio.c_str(), f.body_steps_per_s);
+                  f.max_ms, f.stddev_ms, ratio.c_str(), f.body_steps_per_s, heap.c_str());
     out << line;
   }
   for (const Figures& f : all) {
     if (f.moved_m < 0.0) continue;
     out << f.workload << ": the watched (top) body moved " << formatted("%.4g", f.moved_m)
         << " m in " << f.engine << "\n";
+  }
+  const auto per_body = heap_per_added_body(all);
+  if (!per_body.empty()) {
+    out << "heap per disc added from rain1000 to rain4000 (held at the end of the run):";
+    for (const auto& [engine, bytes] : per_body) {
+      out << " " << engine << " " << formatted("%.0f", bytes) << " B";
+    }
+    out << "\n";
   }
 }
 

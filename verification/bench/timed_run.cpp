@@ -1,10 +1,25 @@
 #include "verification/bench/timed_run.hpp"
 
+#include <malloc.h>
+
 #include <chrono>
 
 namespace gp::bench {
 
+namespace {
+
+// Bytes handed out by malloc and not yet freed, the large blocks it maps apart included. Every
+// engine allocates through malloc (Box2D's block allocator takes its chunks from it), so this
+// measures all three alike.
+double heap_in_use() {
+  const struct mallinfo2 heap = mallinfo2();
+  return static_cast<double>(heap.uordblks + heap.hblkhd);
+}
+
+}  // namespace
+
 TimedRun time_run(const Workload& w, Engine engine) {
+  const double heap_before = heap_in_use();
   EngineRun run(engine, w.scene);
   const Vec2 start = w.watched ? run.state(*w.watched).position : Vec2::Zero();
   // steady_clock: wall time that no clock adjustment during the run can shift.
@@ -13,6 +28,7 @@ TimedRun time_run(const Workload& w, Engine engine) {
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - begin;
   TimedRun timed{elapsed.count()};
   if (w.watched) timed.moved_m = (run.state(*w.watched).position - start).norm();
+  timed.heap_bytes = heap_in_use() - heap_before;
   return timed;
 }
 

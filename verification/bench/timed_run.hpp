@@ -12,9 +12,13 @@ struct TimedRun {
   /// they are not what a game pays per frame.
   double seconds = 0.0;
   double moved_m = -1.0;  ///< the watched body's displacement; negative when none is watched
+  /// Bytes of heap the engine holds at the end of the run, scene and all (glibc's count of the
+  /// heap in use, after less before setting the scene up).
+  double heap_bytes = 0.0;
 };
 
-/// Sets `w` up in `engine`, steps it `w.steps` times by w.scene.dt and times the steps. Throws
+/// Sets `w` up in `engine`, steps it `w.steps` times by w.scene.dt, times the steps and measures
+/// the heap the engine then holds. Throws
 /// what the engine throws (NumericalError when a state becomes non-finite).
 TimedRun time_run(const Workload& w, Engine engine);
 
