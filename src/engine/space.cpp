@@ -68,7 +68,7 @@ BodyId Space::add_body(const BodyDef& def) {
 }
 
 void Space::set_force_callback(BodyId body, ForceCallback callback) {
-  forces_.set_callback(body, std::move(callback));
+  forces_.set_callback(body, inertia_.inverse_moment[body], std::move(callback));
 }
 
 double Space::mass(BodyId body) const {
