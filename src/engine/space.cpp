@@ -120,17 +120,15 @@ void Space::move_kinematic(double h) {
 const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
   shapes_.place(start_.position, start_.angle, world_start_);
   // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
-  end_position_ = start_.position;
-  end_angle_ = start_.angle;
-  for (BodyId j : forces_.bodies()) {
-    end_position_[j] = motion.position(j, h);
-    end_angle_[j] = motion.angle(j, h);
-  }
-  for (BodyId k : kinematic_) {
-    end_position_[k] = start_.position[k] + h * start_.velocity[k];
-    end_angle_[k] = start_.angle[k] + h * start_.angular_velocity[k];
-  }
-  shapes_.place(end_position_, end_angle_, world_end_);
+  const auto end_pose = [&](BodyId j) {
+    if (dynamic_[j]) return std::pair(motion.position(j, h), motion.angle(j, h));
+    if (types_[j] == BodyType::Kinematic) {
+      return std::pair<Vec2, double>(start_.position[j] + h * start_.velocity[j],
+                                     start_.angle[j] + h * start_.angular_velocity[j]);
+    }
+    return std::pair(start_.position[j], start_.angle[j]);
+  };
+  shapes_.place(end_pose, world_end_);
   return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
 }
 

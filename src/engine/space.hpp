@@ -108,9 +108,6 @@ class Space {
   double previous_h_ = 0.0;
   // Scratch kept between steps so that a step does not allocate once the scene is warmed up.
   MotionState start_;
-  // Where the ballistic paths end, for placing the shapes there: no velocities needed.
-  std::vector<Vec2> end_position_;
-  std::vector<double> end_angle_;
   Accelerations start_acceleration_;
   WorldShapes world_start_, world_end_;
   std::vector<Contact> contacts_, impact_scratch_;

@@ -29,19 +29,4 @@ BodyShapes::Range BodyShapes::of_body(BodyId body) const {
   return {first, last};
 }
 
-void BodyShapes::place(std::span<const Vec2> position, std::span<const double> angle,
-                       WorldShapes& world) const {
-  const bool first = world.size() != records_.size();
-  if (first) world.lay_out(records_.size(), polygon_vertices_);
-  for (std::size_t i = 0; i < records_.size(); ++i) {
-    const ShapeRecord& r = records_[i];
-    if (!r.moves && !first) continue;
-    const auto* disc = std::get_if<Circle>(&r.local);
-    const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
-    world.place(i, r.local,
-                turning_moves_it ? Transform(position[r.body], angle[r.body])
-                                 : Transform(position[r.body]));
-  }
-}
-
 }  // namespace gp

@@ -4,10 +4,13 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
+#include "engine/geometry/transform.hpp"
 #include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
@@ -41,7 +44,13 @@ class BodyShapes {
   /// Places every moving shape by its body's centre of mass `position` and orientation `angle`,
   /// indexed by body id (static shapes once, on the first call).
   void place(std::span<const Vec2> position, std::span<const double> angle,
-             WorldShapes& world) const;
+             WorldShapes& world) const {
+    place([&](BodyId body) { return std::pair(position[body], angle[body]); }, world);
+  }
+  /// The same with the centre of mass and orientation of each body given by `pose(body)`, a
+  /// std::pair<Vec2, double>, for poses computed as they are needed rather than stored.
+  template <typename Pose>
+  void place(const Pose& pose, WorldShapes& world) const;
 
  private:
   std::vector<ShapeRecord> records_;
@@ -51,5 +60,19 @@ class BodyShapes {
   std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
+
+template <typename Pose>
+void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
+  const bool first = world.size() != records_.size();
+  if (first) world.lay_out(records_.size(), polygon_vertices_);
+  for (std::size_t i = 0; i < records_.size(); ++i) {
+    const ShapeRecord& r = records_[i];
+    if (!r.moves && !first) continue;
+    const auto* disc = std::get_if<Circle>(&r.local);
+    const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
+    const auto [position, angle] = pose(r.body);
+    world.place(i, r.local, turning_moves_it ? Transform(position, angle) : Transform(position));
+  }
+}
 
 }  // namespace gp
