@@ -14,4 +14,11 @@ void reserve_for(std::vector<T>& buffer, std::size_t count) {
   if (buffer.capacity() < count) buffer.reserve(count + count / 4);
 }
 
+/// Appends `value` to `buffer`, which grows by a quarter when full.
+template <typename T>
+void append(std::vector<T>& buffer, const T& value) {
+  if (buffer.size() == buffer.capacity()) buffer.reserve(buffer.size() + buffer.size() / 4 + 1);
+  buffer.push_back(value);
+}
+
 }  // namespace gp
