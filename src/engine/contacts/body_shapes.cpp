@@ -19,7 +19,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
     polygon_vertices_ += count;
   }
-  records_.push_back({kept, body, moves, restitution, friction});
+  records_.push_back({PackedGeometry(kept), restitution, friction, body, moves});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {

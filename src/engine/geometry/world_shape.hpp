@@ -32,6 +32,16 @@ struct WorldShapeView {
   ShapeKind kind() const { return kind_of(geometry); }
 };
 
+/// The tight bounding boxes of a disc and of a segment (m).
+inline Aabb bounds_of(const Circle& circle) {
+  const Vec2 extent(circle.radius, circle.radius);
+  return {circle.center - extent, circle.center + extent};
+}
+inline Aabb bounds_of(const Segment& segment) {
+  const Vec2 extent(segment.radius, segment.radius);
+  return {segment.a.cwiseMin(segment.b) - extent, segment.a.cwiseMax(segment.b) + extent};
+}
+
 /// The shape `local` (body frame) moved into the world by its body's `transform`.
 WorldShape to_world(const GeometryView& local, const Transform& transform);
 
