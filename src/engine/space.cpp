@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/input_error.hpp"
 #include "engine/numerical_error.hpp"
@@ -37,15 +38,15 @@ BodyId Space::add_body(const BodyDef& def) {
                      "none");
   }
   names_.push_back(def.name);
-  types_.push_back(def.type);
-  dynamic_.push_back(dynamic);
-  inertia_.inverse_mass.push_back(dynamic ? 1.0 / mass.mass : 0.0);
-  inertia_.inverse_moment.push_back(rotates ? 1.0 / mass.moment : 0.0);
+  append(types_, def.type);
+  append(dynamic_, dynamic);
+  append(inertia_.inverse_mass, dynamic ? 1.0 / mass.mass : 0.0);
+  append(inertia_.inverse_moment, rotates ? 1.0 / mass.moment : 0.0);
   const Transform frame(def.position, def.angle);
-  state_.position.push_back(frame.apply(mass.local_center));
-  state_.angle.push_back(dd::rotated_orientation(def.angle, 0.0));
-  state_.velocity.push_back(def.type == BodyType::Static ? Vec2::Zero() : def.velocity);
-  state_.angular_velocity.push_back(def.type == BodyType::Static ? 0.0 : def.angular_velocity);
+  append(state_.position, frame.apply(mass.local_center));
+  append(state_.angle, dd::rotated_orientation(def.angle, 0.0));
+  append(state_.velocity, def.type == BodyType::Static ? Vec2::Zero() : def.velocity);
+  append(state_.angular_velocity, def.type == BodyType::Static ? 0.0 : def.angular_velocity);
   if (dynamic) {
     forces_.add(id, {mass.mass, inertia_.inverse_moment.back(), def.force, def.torque,
                      def.force_point.has_value(),

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <variant>
 
+#include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
 
 void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
                      bool moves) {
-  while (first_.size() <= body) first_.push_back(static_cast<std::uint32_t>(size()));
+  while (first_.size() <= body) append(first_, static_cast<std::uint32_t>(size()));
   GeometryView kept = view_of(local.geometry());
   if (const auto* polygon = std::get_if<PolygonView>(&kept)) {
     const std::size_t count = polygon->vertices.size();
@@ -19,7 +20,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
     polygon_vertices_ += count;
   }
-  records_.push_back({PackedGeometry(kept), restitution, friction, body, moves});
+  append(records_, {PackedGeometry(kept), restitution, friction, body, moves});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
 #include "gamephysics/models/dd/torque.hpp"
 #include "gamephysics/models/gd/gravitational_acceleration.hpp"
@@ -17,9 +18,9 @@ bool ForceModel::beyond_gravity(const BodyForces& forces) {
 
 void ForceModel::add(BodyId id, BodyForces forces) {
   const auto entry = static_cast<std::uint32_t>(ids_.size());
-  ids_.push_back(id);
-  masses_.push_back(forces.mass);
-  rotates_.push_back(forces.inverse_moment > 0.0);
+  append(ids_, id);
+  append(masses_, forces.mass);
+  append(rotates_, forces.inverse_moment > 0.0);
   if (beyond_gravity(forces)) applied_.push_back({entry, std::move(forces)});
 }
 
