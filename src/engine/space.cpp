@@ -37,7 +37,7 @@ BodyId Space::add_body(const BodyDef& def) {
     throw InputError(prefix + ".moment", "is required for a body without area that rotates",
                      "none");
   }
-  names_.push_back(def.name);
+  names_.add(def.name);
   append(types_, def.type);
   append(dynamic_, dynamic);
   append(inertia_.inverse_mass, dynamic ? 1.0 / mass.mass : 0.0);
@@ -104,7 +104,7 @@ void Space::step(double dt) {
   for (BodyId j : forces_.bodies()) {
     if (!state_.position[j].allFinite() || !state_.velocity[j].allFinite() ||
         !std::isfinite(state_.angle[j]) || !std::isfinite(state_.angular_velocity[j])) {
-      throw NumericalError(names_[j], time_);
+      throw NumericalError(std::string(names_[j]), time_);
     }
   }
 }
