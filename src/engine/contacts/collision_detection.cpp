@@ -36,7 +36,7 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
     body_of_[i] = shapes[i].body;
     // A static proxy is one whose body collisions cannot move: the broadphase pairs no two.
-    proxies_[i] = {start[i].bounds.united(end[i].bounds), i, !dynamic[body_of_[i]]};
+    proxies_[i] = {start.bounds(i).united(end.bounds(i)), i, !dynamic[body_of_[i]]};
   }
   broadphase_.find_pairs(proxies_, pairs_);
   // Two parts of one body never collide.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <variant>
 
 #include "engine/geometry/shape.hpp"
 
@@ -15,34 +16,38 @@ class PackedGeometry {
   PackedGeometry() : circle_{0.0, 0.0, 0.0}, kind_(ShapeKind::kCircle) {}
   /// Packs `geometry`; a polygon's vertices, then as many normals right after them, stay where
   /// they are stored.
-  explicit PackedGeometry(const GeometryView& geometry) {
-    if (const auto* circle = std::get_if<Circle>(&geometry)) {
-      circle_ = {circle->center.x(), circle->center.y(), circle->radius};
-      kind_ = ShapeKind::kCircle;
-    } else if (const auto* segment = std::get_if<Segment>(&geometry)) {
-      segment_ = {segment->a.x(), segment->a.y(), segment->b.x(), segment->b.y(), segment->radius};
-      kind_ = ShapeKind::kSegment;
-    } else {
-      const auto& polygon = std::get<PolygonView>(geometry);
-      polygon_ = {polygon.vertices.data(), static_cast<std::uint32_t>(polygon.vertices.size())};
-      kind_ = ShapeKind::kPolygon;
-    }
-  }
+  explicit PackedGeometry(const Circle& circle)
+      : circle_{circle.center.x(), circle.center.y(), circle.radius}, kind_(ShapeKind::kCircle) {}
+  explicit PackedGeometry(const Segment& segment)
+      : segment_{segment.a.x(), segment.a.y(), segment.b.x(), segment.b.y(), segment.radius},
+        kind_(ShapeKind::kSegment) {}
+  explicit PackedGeometry(const PolygonView& polygon)
+      : polygon_{polygon.vertices.data(), static_cast<std::uint32_t>(polygon.vertices.size())},
+        kind_(ShapeKind::kPolygon) {}
+  explicit PackedGeometry(const GeometryView& geometry)
+      : PackedGeometry(std::visit([](const auto& g) { return PackedGeometry(g); }, geometry)) {}
 
   ShapeKind kind() const { return kind_; }
 
   GeometryView view() const {
     switch (kind_) {
       case ShapeKind::kCircle:
-        return Circle{Vec2(circle_.x, circle_.y), circle_.radius};
+        return circle();
       case ShapeKind::kSegment:
-        return Segment{Vec2(segment_.ax, segment_.ay), Vec2(segment_.bx, segment_.by),
-                       segment_.radius};
+        return segment();
       case ShapeKind::kPolygon:
         break;
     }
-    return PolygonView{std::span(polygon_.points, polygon_.count),
-                       std::span(polygon_.points + polygon_.count, polygon_.count)};
+    return polygon();
+  }
+  /// The geometry of each kind, for a caller that has switched on kind() already.
+  Circle circle() const { return {Vec2(circle_.x, circle_.y), circle_.radius}; }
+  Segment segment() const {
+    return {Vec2(segment_.ax, segment_.ay), Vec2(segment_.bx, segment_.by), segment_.radius};
+  }
+  PolygonView polygon() const {
+    return {std::span(polygon_.points, polygon_.count),
+            std::span(polygon_.points + polygon_.count, polygon_.count)};
   }
 
  private:

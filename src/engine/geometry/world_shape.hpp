@@ -24,7 +24,10 @@ struct WorldShapeView {
   Aabb bounds;
 
   WorldShapeView() = default;
-  WorldShapeView(const GeometryView& placed, const Aabb& box) : geometry(placed), bounds(box) {}
+  /// `placed`: a GeometryView or one of its alternatives, which then goes in without a variant
+  /// made on the way.
+  template <typename Geometry>
+  WorldShapeView(const Geometry& placed, const Aabb& box) : geometry(placed), bounds(box) {}
   /// Views `shape`, which must outlive the view (as a std::string does its std::string_view).
   WorldShapeView(const WorldShape& shape)  // NOLINT(google-explicit-constructor)
       : geometry(view_of(shape.geometry)), bounds(shape.bounds) {}

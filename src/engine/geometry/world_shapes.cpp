@@ -12,11 +12,18 @@ void WorldShapes::lay_out(std::size_t count, std::size_t polygons, std::size_t p
 }
 
 void WorldShapes::place(std::size_t i, const GeometryView& local, const Transform& transform) {
-  const auto* polygon = std::get_if<PolygonView>(&local);
-  if (polygon == nullptr) {
-    shapes_[i] = PackedGeometry(view_of(to_world(local, transform).geometry));
+  // A disc or a segment straight into its packed form: through to_world, it would be built as a
+  // WorldShape, with room for a polygon, first.
+  if (const auto* circle = std::get_if<Circle>(&local)) {
+    shapes_[i] = PackedGeometry(Circle{transform.apply(circle->center), circle->radius});
     return;
   }
+  if (const auto* segment = std::get_if<Segment>(&local)) {
+    shapes_[i] = PackedGeometry(
+        Segment{transform.apply(segment->a), transform.apply(segment->b), segment->radius});
+    return;
+  }
+  const auto* polygon = std::get_if<PolygonView>(&local);
   const std::size_t count = polygon->vertices.size();
   const std::size_t room_size = 2 * count + 2;
   Vec2* room = nullptr;

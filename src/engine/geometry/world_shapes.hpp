@@ -32,16 +32,22 @@ class WorldShapes {
   std::size_t size() const { return shapes_.size(); }
   /// Shape `i` as placed, viewed: made when asked for, so hold it by value or by a const
   /// reference bound to the call.
-  WorldShapeView operator[](std::size_t i) const {
-    const GeometryView geometry = shapes_[i].view();
-    if (const auto* circle = std::get_if<Circle>(&geometry)) return {geometry, bounds_of(*circle)};
-    if (const auto* segment = std::get_if<Segment>(&geometry)) {
-      return {geometry, bounds_of(*segment)};
+  /// The box of shape `i` as placed, without the view around it.
+  Aabb bounds(std::size_t i) const {
+    const PackedGeometry& shape = shapes_[i];
+    switch (shape.kind()) {
+      case ShapeKind::kCircle:
+        return bounds_of(shape.circle());
+      case ShapeKind::kSegment:
+        return bounds_of(shape.segment());
+      case ShapeKind::kPolygon:
+        break;
     }
-    const auto& polygon = std::get<PolygonView>(geometry);
+    const PolygonView polygon = shape.polygon();
     const Vec2* box = polygon.normals.data() + polygon.normals.size();
-    return {geometry, Aabb{box[0], box[1]}};
+    return {box[0], box[1]};
   }
+  WorldShapeView operator[](std::size_t i) const { return {shapes_[i].view(), bounds(i)}; }
 
  private:
   std::vector<PackedGeometry> shapes_;
