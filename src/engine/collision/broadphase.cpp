@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "engine/capacity.hpp"
 
@@ -40,17 +41,33 @@ void SweepAndPrune::find_pairs(std::span<const BroadphaseProxy> proxies,
 }
 
 double SweepAndPrune::ideal_band_height(std::span<const BroadphaseProxy> proxies,
-                                        double bottoms_range) {
-  heights_.clear();
-  for (const BroadphaseProxy& proxy : proxies) {
-    heights_.push_back(proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_);
-  }
-  const auto middle = heights_.begin() + static_cast<std::ptrdiff_t>(heights_.size() / 2);
-  std::nth_element(heights_.begin(), middle, heights_.end());
+                                        double bottoms_range) const {
   const double height =
-      std::max(2.0 * *middle, bottoms_range / static_cast<double>(proxies.size()));
+      std::max(2.0 * median_height(proxies), bottoms_range / static_cast<double>(proxies.size()));
   // Boxes all flat and level: any height gives them one band.
   return height > 0.0 ? height : 1.0;
+}
+
+double SweepAndPrune::median_height(std::span<const BroadphaseProxy> proxies) const {
+  // Found without a copy of the heights to select in, which would be kept as large as the
+  // proxies: the heights are ≥ 0 (never -0, as x - x is +0), and such doubles order as their bit
+  // patterns do, so a binary search over the patterns finds it in at most 64 passes that count
+  // the heights up to a pattern. The bands are placed seldom, so the passes cost little.
+  const std::size_t rank = proxies.size() / 2;
+  std::uint64_t low = 0;
+  std::uint64_t high = std::bit_cast<std::uint64_t>(std::numeric_limits<double>::infinity());
+  while (low < high) {
+    const std::uint64_t middle = low + (high - low) / 2;
+    const double bound = std::bit_cast<double>(middle);
+    std::size_t up_to = 0;
+    for (const BroadphaseProxy& proxy : proxies) up_to += grown_height(proxy) <= bound;
+    if (up_to > rank) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  return std::bit_cast<double>(low);
 }
 
 void SweepAndPrune::place_bands(std::span<const BroadphaseProxy> proxies, double lowest,
@@ -81,7 +98,7 @@ bool SweepAndPrune::bands_suit(std::span<const BroadphaseProxy> proxies, double 
   std::size_t up_to_h = 0;
   std::size_t below_quarter_h = 0;
   for (const BroadphaseProxy& proxy : proxies) {
-    const double height = proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_;
+    const double height = grown_height(proxy);
     up_to_h += height <= h;
     below_quarter_h += height < 0.25 * h;
   }

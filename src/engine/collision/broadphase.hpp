@@ -90,7 +90,12 @@ class SweepAndPrune {
   /// Twice the median box height (m), widened when needed so that there are at most about N
   /// bands across `bottoms_range` (m), the spread of the boxes' bottoms: a single huge box then
   /// cannot make more entries than there are proxies.
-  double ideal_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range);
+  double ideal_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range) const;
+  /// The height of rank N / 2 (from 0) of the grown boxes (m).
+  double median_height(std::span<const BroadphaseProxy> proxies) const;
+  double grown_height(const BroadphaseProxy& proxy) const {
+    return proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_;
+  }
   /// Keeps the bands of the last call when they still suit boxes whose grown bottoms span
   /// [lowest, highest] (m); else places them anew and forgets the entries.
   void place_bands(std::span<const BroadphaseProxy> proxies, double lowest, double highest);
@@ -124,7 +129,6 @@ class SweepAndPrune {
   double band_height_ = 0.0;  // m; 0 while no bands are placed
   std::size_t candidates_tested_ = 0;
   std::size_t entries_resorted_ = 0;
-  std::vector<double> heights_;       // scratch for the median
   std::vector<BandRange> bands_;      // per proxy of the last call
   std::vector<BandRange> new_bands_;  // per proxy of this call
   std::vector<Entry> entries_;        // sorted by band, then left, between calls
