@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/input_error.hpp"
 #include "engine/numerical_error.hpp"
@@ -36,16 +37,16 @@ BodyId Space::add_body(const BodyDef& def) {
     throw InputError(prefix + ".moment", "is required for a body without area that rotates",
                      "none");
   }
-  names_.push_back(def.name);
-  types_.push_back(def.type);
-  dynamic_.push_back(dynamic);
-  inertia_.inverse_mass.push_back(dynamic ? 1.0 / mass.mass : 0.0);
-  inertia_.inverse_moment.push_back(rotates ? 1.0 / mass.moment : 0.0);
+  names_.add(def.name);
+  append(types_, def.type);
+  append(dynamic_, dynamic);
+  append(inertia_.inverse_mass, dynamic ? 1.0 / mass.mass : 0.0);
+  append(inertia_.inverse_moment, rotates ? 1.0 / mass.moment : 0.0);
   const Transform frame(def.position, def.angle);
-  state_.position.push_back(frame.apply(mass.local_center));
-  state_.angle.push_back(dd::rotated_orientation(def.angle, 0.0));
-  state_.velocity.push_back(def.type == BodyType::Static ? Vec2::Zero() : def.velocity);
-  state_.angular_velocity.push_back(def.type == BodyType::Static ? 0.0 : def.angular_velocity);
+  append(state_.position, frame.apply(mass.local_center));
+  append(state_.angle, dd::rotated_orientation(def.angle, 0.0));
+  append(state_.velocity, def.type == BodyType::Static ? Vec2::Zero() : def.velocity);
+  append(state_.angular_velocity, def.type == BodyType::Static ? 0.0 : def.angular_velocity);
   if (dynamic) {
     forces_.add(id, {mass.mass, inertia_.inverse_moment.back(), def.force, def.torque,
                      def.force_point.has_value(),
@@ -68,7 +69,7 @@ BodyId Space::add_body(const BodyDef& def) {
 }
 
 void Space::set_force_callback(BodyId body, ForceCallback callback) {
-  forces_.set_callback(body, std::move(callback));
+  forces_.set_callback(body, inertia_.inverse_moment[body], std::move(callback));
 }
 
 double Space::mass(BodyId body) const {
@@ -103,7 +104,7 @@ void Space::step(double dt) {
   for (BodyId j : forces_.bodies()) {
     if (!state_.position[j].allFinite() || !state_.velocity[j].allFinite() ||
         !std::isfinite(state_.angle[j]) || !std::isfinite(state_.angular_velocity[j])) {
-      throw NumericalError(names_[j], time_);
+      throw NumericalError(std::string(names_[j]), time_);
     }
   }
 }
@@ -120,17 +121,15 @@ void Space::move_kinematic(double h) {
 const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
   shapes_.place(start_.position, start_.angle, world_start_);
   // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
-  end_position_ = start_.position;
-  end_angle_ = start_.angle;
-  for (BodyId j : forces_.bodies()) {
-    end_position_[j] = motion.position(j, h);
-    end_angle_[j] = motion.angle(j, h);
-  }
-  for (BodyId k : kinematic_) {
-    end_position_[k] = start_.position[k] + h * start_.velocity[k];
-    end_angle_[k] = start_.angle[k] + h * start_.angular_velocity[k];
-  }
-  shapes_.place(end_position_, end_angle_, world_end_);
+  const auto end_pose = [&](BodyId j) {
+    if (dynamic_[j]) return std::pair(motion.position(j, h), motion.angle(j, h));
+    if (types_[j] == BodyType::Kinematic) {
+      return std::pair<Vec2, double>(start_.position[j] + h * start_.velocity[j],
+                                     start_.angle[j] + h * start_.angular_velocity[j]);
+    }
+    return std::pair(start_.position[j], start_.angle[j]);
+  };
+  shapes_.place(end_pose, world_end_);
   return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
 }
 

@@ -5,9 +5,11 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/body.hpp"
+#include "engine/body_names.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/collision_detection.hpp"
 #include "engine/contacts/contact_solver.hpp"
@@ -43,7 +45,7 @@ class Space {
 
   double time() const { return time_; }
   std::size_t body_count() const { return names_.size(); }
-  const std::string& name(BodyId body) const { return names_[body]; }
+  std::string_view name(BodyId body) const { return names_[body]; }
   BodyType type(BodyId body) const { return types_[body]; }
   /// kg; infinite for static and kinematic bodies.
   double mass(BodyId body) const;
@@ -89,7 +91,7 @@ class Space {
 
   Settings settings_;
   double time_ = 0.0;
-  std::vector<std::string> names_;
+  BodyNames names_;
   std::vector<BodyType> types_;
   std::vector<char> dynamic_;
   std::vector<BodyId> kinematic_;
@@ -108,9 +110,6 @@ class Space {
   double previous_h_ = 0.0;
   // Scratch kept between steps so that a step does not allocate once the scene is warmed up.
   MotionState start_;
-  // Where the ballistic paths end, for placing the shapes there: no velocities needed.
-  std::vector<Vec2> end_position_;
-  std::vector<double> end_angle_;
   Accelerations start_acceleration_;
   WorldShapes world_start_, world_end_;
   ContactSet contacts_, impact_scratch_;

@@ -42,8 +42,15 @@ std::vector<ProxyPair> sorted(std::vector<ProxyPair> pairs) {
   return pairs;
 }
 
+std::vector<ProxyPair> pairs_found(gp::SweepAndPrune& broadphase,
+                                   const std::vector<BroadphaseProxy>& proxies) {
+  std::vector<ProxyPair> pairs;
+  broadphase.find_pairs(proxies, pairs);
+  return pairs;
+}
+
 BroadphaseProxy box_proxy(std::uint32_t id, const Vec2& center, const Vec2& size, bool is_static) {
-  return {id, Aabb{center - 0.5 * size, center + 0.5 * size}, is_static};
+  return {Aabb{center - 0.5 * size, center + 0.5 * size}, id, is_static};
 }
 
 }  // namespace
@@ -62,7 +69,7 @@ TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 ran
   const double margin = 0.1;
   gp::SweepAndPrune broadphase(margin);
 
-  const std::vector<ProxyPair> first = sorted(broadphase.find_pairs(proxies));
+  const std::vector<ProxyPair> first = sorted(pairs_found(broadphase, proxies));
   const std::vector<ProxyPair> expected = all_overlapping_pairs(proxies, margin);
   CHECK(expected.size() > 100);  // the scene does have overlaps to find
   CHECK(first == expected);
@@ -75,15 +82,15 @@ TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 ran
       const Vec2 move(jiggle(random), jiggle(random));
       proxy.bounds = {proxy.bounds.min + move, proxy.bounds.max + move};
     }
-    CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, margin));
+    CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, margin));
   }
   SECTION("after the proxies were given in another order") {
     std::shuffle(proxies.begin(), proxies.end(), random);
-    CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, margin));
+    CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, margin));
   }
   SECTION("after proxies were removed") {
     proxies.resize(600);
-    CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, margin));
+    CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, margin));
   }
 }
 
@@ -135,7 +142,7 @@ TEST_CASE("Sweep and prune kept from step to step finds the pairs of all-pairs t
       proxies.push_back(
           box_proxy(i * 2 + 1, m.center, {m.size.x(), breathing * m.size.y()}, m.is_static));
     }
-    const std::vector<ProxyPair> found = sorted(broadphase.find_pairs(proxies));
+    const std::vector<ProxyPair> found = sorted(pairs_found(broadphase, proxies));
     INFO("step " << step);
     REQUIRE(found == all_overlapping_pairs(proxies, margin));
     if (broadphase.entries_resorted() < proxies.size() / 4) ++repaired_steps;
@@ -155,15 +162,15 @@ TEST_CASE("Sweep and prune sorts afresh when the boxes were shuffled since the l
     proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  broadphase.find_pairs(proxies);
+  pairs_found(broadphase, proxies);
   CHECK(broadphase.entries_resorted() >= proxies.size());  // the first call has nothing to repair
-  broadphase.find_pairs(proxies);
+  pairs_found(broadphase, proxies);
   CHECK(broadphase.entries_resorted() == 0);  // nothing moved
   for (BroadphaseProxy& proxy : proxies) {
     proxy.bounds = Aabb{{-proxy.bounds.max.x(), proxy.bounds.min.y()},
                         {-proxy.bounds.min.x(), proxy.bounds.max.y()}};
   }
-  CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, 0.0));
+  CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.0));
   CHECK(broadphase.entries_resorted() >= proxies.size());
 }
 
@@ -174,7 +181,7 @@ TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Coll
     proxies.push_back(box_proxy(level + 1, {0.01 * (level % 3), 0.5 + level}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair> pairs = sorted(broadphase.find_pairs(proxies));
+  const std::vector<ProxyPair> pairs = sorted(pairs_found(broadphase, proxies));
   CHECK(broadphase.candidates_tested() < 4 * proxies.size());
   CHECK(pairs.size() == 200);  // each box touches the one below it (touching counts)
   CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
@@ -191,7 +198,7 @@ TEST_CASE("Sweep and prune compares a few candidates per box in a scene spread b
     proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.05);
-  const std::size_t pairs = broadphase.find_pairs(proxies).size();
+  const std::size_t pairs = pairs_found(broadphase, proxies).size();
   CHECK(pairs > 0);
   CHECK(broadphase.candidates_tested() < 8 * proxies.size());
 }
@@ -203,7 +210,7 @@ TEST_CASE("A huge box makes no more band entries than there are boxes",
     proxies.push_back(box_proxy(id, {1.5 * id, 2.0 * (id % 7)}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair> pairs = sorted(broadphase.find_pairs(proxies));
+  const std::vector<ProxyPair> pairs = sorted(pairs_found(broadphase, proxies));
   CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
   CHECK(broadphase.candidates_tested() < 2 * proxies.size());
 }
@@ -214,63 +221,65 @@ TEST_CASE("Two static proxies are never paired", "[FR:Determine-Collisions]") {
     proxies.push_back(box_proxy(id, {0.1 * id, 0.0}, {2.0, 2.0}, id % 2 == 0));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair>& pairs = broadphase.find_pairs(proxies);
+  const std::vector<ProxyPair>& pairs = pairs_found(broadphase, proxies);
   CHECK_FALSE(pairs.empty());
   for (const ProxyPair& pair : pairs) {
     CHECK_FALSE((proxies[pair.first].is_static && proxies[pair.second].is_static));
   }
   for (BroadphaseProxy& proxy : proxies) proxy.is_static = true;
-  CHECK(broadphase.find_pairs(proxies).empty());
+  CHECK(pairs_found(broadphase, proxies).empty());
 }
 
 TEST_CASE("Boxes apart by up to the margin are paired", "[FR:Determine-Collisions]") {
   const std::vector<BroadphaseProxy> proxies{box_proxy(1, {0.0, 0.0}, {1.0, 1.0}, false),
                                              box_proxy(2, {1.09, 0.3}, {1.0, 1.0}, false)};
   gp::SweepAndPrune wide(0.1);
-  REQUIRE(wide.find_pairs(proxies).size() == 1);
-  CHECK(wide.find_pairs(proxies)[0] == ProxyPair{1, 2});
+  REQUIRE(pairs_found(wide, proxies).size() == 1);
+  CHECK(pairs_found(wide, proxies)[0] == ProxyPair{1, 2});
   gp::SweepAndPrune narrow(0.08);
-  CHECK(narrow.find_pairs(proxies).empty());
+  CHECK(pairs_found(narrow, proxies).empty());
 }
 
-TEST_CASE("A warmed-up sweep and prune reuses its pair buffer", "[FR:Determine-Collisions]") {
+TEST_CASE("A warmed-up sweep and prune reuses the pair buffer it is given",
+          "[FR:Determine-Collisions]") {
   std::vector<BroadphaseProxy> proxies;
   for (std::uint32_t id = 0; id < 100; ++id) {
     proxies.push_back(box_proxy(id, {0.9 * id, 0.0}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair>& warm = broadphase.find_pairs(proxies);
-  const ProxyPair* buffer = warm.data();
-  const std::size_t capacity = warm.capacity();
+  std::vector<ProxyPair> pairs;
+  broadphase.find_pairs(proxies, pairs);
+  const ProxyPair* buffer = pairs.data();
+  const std::size_t capacity = pairs.capacity();
   for (BroadphaseProxy& proxy : proxies) proxy.bounds.min.y() += 0.01;
-  const std::vector<ProxyPair>& next = broadphase.find_pairs(proxies);
-  CHECK(next.size() == 99);
-  CHECK(next.data() == buffer);
-  CHECK(next.capacity() == capacity);
+  broadphase.find_pairs(proxies, pairs);
+  CHECK(pairs.size() == 99);
+  CHECK(pairs.data() == buffer);
+  CHECK(pairs.capacity() == capacity);
 }
 
 TEST_CASE("Boxes reaching the largest doubles are paired without overflow",
           "[FR:Determine-Collisions]") {
   // The top of the tall box is far beyond any band: its band number is clamped, not overflowed
   // (an undefined conversion the sanitizers report).
-  const std::vector<BroadphaseProxy> proxies{{0, Aabb{{-1.0, -1e308}, {1.0, 1.7e308}}, false},
-                                             {1, Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
-                                             {2, Aabb{{5.0, 0.0}, {6.0, 1.0}}, false}};
+  const std::vector<BroadphaseProxy> proxies{{Aabb{{-1.0, -1e308}, {1.0, 1.7e308}}, 0, false},
+                                             {Aabb{{0.0, 0.0}, {1.0, 1.0}}, 1, false},
+                                             {Aabb{{5.0, 0.0}, {6.0, 1.0}}, 2, false}};
   gp::SweepAndPrune broadphase(0.0);
-  CHECK(sorted(broadphase.find_pairs(proxies)) == all_overlapping_pairs(proxies, 0.0));
+  CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.0));
   CHECK(all_overlapping_pairs(proxies, 0.0) == std::vector<ProxyPair>{{0, 1}});
 }
 
 TEST_CASE("A non-finite box, from a state about to be reported non-finite, is paired with none",
           "[FR:Determine-Collisions]") {
-  std::vector<BroadphaseProxy> proxies{{0, Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
-                                       {1, Aabb{{0.5, 0.5}, {1.5, 1.5}}, false}};
+  std::vector<BroadphaseProxy> proxies{{Aabb{{0.0, 0.0}, {1.0, 1.0}}, 0, false},
+                                       {Aabb{{0.5, 0.5}, {1.5, 1.5}}, 1, false}};
   gp::SweepAndPrune broadphase(0.0);
-  REQUIRE(broadphase.find_pairs(proxies).size() == 1);
+  REQUIRE(pairs_found(broadphase, proxies).size() == 1);
   proxies[1].bounds.max.y() = std::numeric_limits<double>::quiet_NaN();
-  CHECK(broadphase.find_pairs(proxies).empty());
+  CHECK(pairs_found(broadphase, proxies).empty());
   proxies[1].bounds = Aabb{{0.5, -1.7e308}, {1.5, 1.0}};
   proxies[0].bounds = Aabb{{0.0, 1.7e308}, {1.0, 1.7e308}};
   // Bottoms 3.4e308 apart: their span overflows a double.
-  CHECK(broadphase.find_pairs(proxies).empty());
+  CHECK(pairs_found(broadphase, proxies).empty());
 }

@@ -265,7 +265,7 @@ TEST_CASE("Shapes placed in one pool are placed as one by one, and keep their ro
                                   Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}})};
   const gp::Transform frame({3.0, 4.0}, 0.7);
   gp::WorldShapes world;
-  world.lay_out(shapes.size(), 7);
+  world.lay_out(shapes.size(), 2, 7);
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     world.place(i, gp::view_of(shapes[i].geometry()), frame);
   }
@@ -279,7 +279,7 @@ TEST_CASE("Shapes placed in one pool are placed as one by one, and keep their ro
     CHECK(world[i].bounds.min == alone.bounds.min);
     CHECK(world[i].bounds.max == alone.bounds.max);
   }
-  const auto& triangle = std::get<gp::PolygonView>(world[2].geometry);
+  const auto triangle = std::get<gp::PolygonView>(world[2].geometry);
   const gp::WorldShape alone = gp::to_world(shapes[2], frame);
   const auto& expected = std::get<gp::ConvexPolygon>(alone.geometry);
   REQUIRE(triangle.vertices.size() == 3);
@@ -289,6 +289,6 @@ TEST_CASE("Shapes placed in one pool are placed as one by one, and keep their ro
   }
   // More polygon vertices than laid out would move the pool under the views already given.
   gp::WorldShapes small;
-  small.lay_out(1, 3);
+  small.lay_out(1, 1, 3);
   CHECK_THROWS_AS(small.place(0, gp::view_of(shapes[0].geometry()), frame), std::logic_error);
 }

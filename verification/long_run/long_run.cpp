@@ -69,8 +69,8 @@ LongRunResult long_run(const Scene& scene, long steps, int samples, const Box& b
         result.max_abs_coordinate =
             std::max(result.max_abs_coordinate, position.cwiseAbs().maxCoeff());
         if (result.first_outside.empty() && !box.contains(position)) {
-          result.first_outside =
-              "body '" + space->name(id) + "' at step " + std::to_string(result.steps_done);
+          result.first_outside = "body '" + std::string(space->name(id)) + "' at step " +
+                                 std::to_string(result.steps_done);
         }
       }
       if (result.steps_done % interval == 0 || result.steps_done == steps) {

@@ -69,7 +69,7 @@ Vec2 point_acceleration(BodyId body, const Vec2& arm, const MotionState& s,
 }  // namespace
 
 std::string describe_pair(const Space& space, BodyId a, BodyId b) {
-  return "bodies '" + space.name(a) + "' and '" + space.name(b) + "'";
+  return "bodies '" + std::string(space.name(a)) + "' and '" + std::string(space.name(b)) + "'";
 }
 
 CollisionWatch::CollisionWatch(const Space& space, const OracleOptions& options)

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -57,7 +58,7 @@ const char* type_name(BodyType type) {
 json bodies_json(const Space& space) {
   json bodies = json::array();
   for (BodyId id = 0; id < space.body_count(); ++id) {
-    bodies.push_back({{"name", space.name(id)},
+    bodies.push_back({{"name", std::string(space.name(id))},
                       {"type", type_name(space.type(id))},
                       {"mass", finite_or_null(space.mass(id))},
                       {"moment", finite_or_null(space.moment(id))},

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
+
+#include "engine/capacity.hpp"
 
 namespace gp {
 
-const std::vector<ProxyPair>& SweepAndPrune::find_pairs(std::span<const BroadphaseProxy> proxies) {
-  pairs_.clear();
+void SweepAndPrune::find_pairs(std::span<const BroadphaseProxy> proxies,
+                               std::vector<ProxyPair>& pairs) {
+  pairs.clear();
   candidates_tested_ = 0;
   entries_resorted_ = 0;
   // A non-finite box comes from a state that the step reports as non-finite (NumericalError); the
@@ -18,7 +22,7 @@ const std::vector<ProxyPair>& SweepAndPrune::find_pairs(std::span<const Broadpha
   };
   if (proxies.empty() || !std::all_of(proxies.begin(), proxies.end(), finite)) {
     forget();
-    return pairs_;
+    return;
   }
   double lowest = proxies.front().bounds.min.y() - half_margin_;
   double highest = lowest;
@@ -29,26 +33,41 @@ const std::vector<ProxyPair>& SweepAndPrune::find_pairs(std::span<const Broadpha
   }
   if (!std::isfinite(highest - lowest)) {
     forget();
-    return pairs_;
+    return;
   }
   place_bands(proxies, lowest, highest);
   update_entries(proxies, highest);
-  sweep(proxies);
-  return pairs_;
+  sweep(proxies, pairs);
 }
 
 double SweepAndPrune::ideal_band_height(std::span<const BroadphaseProxy> proxies,
-                                        double bottoms_range) {
-  heights_.clear();
-  for (const BroadphaseProxy& proxy : proxies) {
-    heights_.push_back(proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_);
-  }
-  const auto middle = heights_.begin() + static_cast<std::ptrdiff_t>(heights_.size() / 2);
-  std::nth_element(heights_.begin(), middle, heights_.end());
+                                        double bottoms_range) const {
   const double height =
-      std::max(2.0 * *middle, bottoms_range / static_cast<double>(proxies.size()));
+      std::max(2.0 * median_height(proxies), bottoms_range / static_cast<double>(proxies.size()));
   // Boxes all flat and level: any height gives them one band.
   return height > 0.0 ? height : 1.0;
+}
+
+double SweepAndPrune::median_height(std::span<const BroadphaseProxy> proxies) const {
+  // Found without a copy of the heights to select in, which would be kept as large as the
+  // proxies: the heights are ≥ 0 (never -0, as x - x is +0), and such doubles order as their bit
+  // patterns do, so a binary search over the patterns finds it in at most 64 passes that count
+  // the heights up to a pattern. The bands are placed seldom, so the passes cost little.
+  const std::size_t rank = proxies.size() / 2;
+  std::uint64_t low = 0;
+  std::uint64_t high = std::bit_cast<std::uint64_t>(std::numeric_limits<double>::infinity());
+  while (low < high) {
+    const std::uint64_t middle = low + (high - low) / 2;
+    const double bound = std::bit_cast<double>(middle);
+    std::size_t up_to = 0;
+    for (const BroadphaseProxy& proxy : proxies) up_to += grown_height(proxy) <= bound;
+    if (up_to > rank) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  return std::bit_cast<double>(low);
 }
 
 void SweepAndPrune::place_bands(std::span<const BroadphaseProxy> proxies, double lowest,
@@ -79,7 +98,7 @@ bool SweepAndPrune::bands_suit(std::span<const BroadphaseProxy> proxies, double 
   std::size_t up_to_h = 0;
   std::size_t below_quarter_h = 0;
   for (const BroadphaseProxy& proxy : proxies) {
-    const double height = proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_;
+    const double height = grown_height(proxy);
     up_to_h += height <= h;
     below_quarter_h += height < 0.25 * h;
   }
@@ -89,24 +108,32 @@ bool SweepAndPrune::bands_suit(std::span<const BroadphaseProxy> proxies, double 
   return up_to_h > median_rank && (h <= 2.0 * range / count || below_quarter_h <= median_rank);
 }
 
+SweepAndPrune::Entry SweepAndPrune::entry(std::span<const BroadphaseProxy> proxies,
+                                          std::int32_t band, std::uint32_t p) const {
+  const Aabb grown = proxies[p].bounds.fattened(half_margin_);
+  return Entry{grown.min.x(),
+               grown.max.x(),
+               grown.min.y(),
+               grown.max.y(),
+               band,
+               p,
+               proxies[p].is_static,
+               band == new_bands_[p].first};
+}
+
 void SweepAndPrune::update_entries(std::span<const BroadphaseProxy> proxies, double highest) {
   const std::int64_t last_band = band_of(highest);
   new_bands_.resize(proxies.size());
   for (std::size_t p = 0; p < proxies.size(); ++p) {
     const Aabb grown = proxies[p].bounds.fattened(half_margin_);
-    new_bands_[p] = {band_of(grown.min.y()), std::min(band_of(grown.max.y()), last_band)};
+    // Between 0 (no bottom is below the origin) and last_band, which 32 bits hold.
+    new_bands_[p] = {static_cast<std::int32_t>(band_of(grown.min.y())),
+                     static_cast<std::int32_t>(std::min(band_of(grown.max.y()), last_band))};
   }
-  const auto entry = [&](std::int64_t band, std::uint32_t p) {
-    const Aabb grown = proxies[p].bounds.fattened(half_margin_);
-    return Entry{band,
-                 grown.min.x(),
-                 grown.max.x(),
-                 grown.min.y(),
-                 grown.max.y(),
-                 p,
-                 proxies[p].is_static,
-                 band == new_bands_[p].first};
-  };
+  if (entries_.empty()) {
+    build_entries(proxies);
+    return;
+  }
   // Each proxy of the last call has exactly one entry in each band of bands_[p]: those of its
   // bands now are kept in place, where they are nearly sorted still.
   std::size_t kept = 0;
@@ -114,19 +141,35 @@ void SweepAndPrune::update_entries(std::span<const BroadphaseProxy> proxies, dou
     if (old.proxy >= proxies.size()) continue;
     const BandRange& now = new_bands_[old.proxy];
     if (old.band < now.first || old.band > now.last) continue;
-    entries_[kept++] = entry(old.band, old.proxy);
+    entries_[kept++] = entry(proxies, old.band, old.proxy);
   }
   entries_.resize(kept);
   added_.clear();
   for (std::uint32_t p = 0; p < proxies.size(); ++p) {
     const BandRange before = p < bands_.size() ? bands_[p] : BandRange{0, -1};
     const BandRange& now = new_bands_[p];
-    for (std::int64_t band = now.first; band <= now.last; ++band) {
-      if (band < before.first || band > before.last) added_.push_back(entry(band, p));
+    for (std::int32_t band = now.first; band <= now.last; ++band) {
+      if (band < before.first || band > before.last) added_.push_back(entry(proxies, band, p));
     }
   }
   bands_.swap(new_bands_);
   sort_entries();
+}
+
+void SweepAndPrune::build_entries(std::span<const BroadphaseProxy> proxies) {
+  // Straight into entries_, sized to them: going through added_ would keep a second buffer as
+  // large as all the entries for the rest of the run.
+  std::size_t count = 0;
+  for (const BandRange& bands : new_bands_) count += bands.last - bands.first + 1;
+  reserve_for(entries_, count);
+  for (std::uint32_t p = 0; p < proxies.size(); ++p) {
+    for (std::int32_t band = new_bands_[p].first; band <= new_bands_[p].last; ++band) {
+      entries_.push_back(entry(proxies, band, p));
+    }
+  }
+  std::sort(entries_.begin(), entries_.end());
+  entries_resorted_ = entries_.size();
+  bands_.swap(new_bands_);
 }
 
 void SweepAndPrune::sort_entries() {
@@ -155,6 +198,7 @@ void SweepAndPrune::sort_entries() {
   // move.
   std::sort(added_.begin(), added_.end());
   entries_resorted_ += added_.size();
+  reserve_for(entries_, kept + added_.size());
   entries_.resize(kept + added_.size());
   std::size_t from_kept = kept;
   std::size_t from_added = added_.size();
@@ -168,8 +212,8 @@ void SweepAndPrune::sort_entries() {
   }
 }
 
-void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies) {
-  // The entries and the count in locals: pairs_ growing might, for all the compiler knows, change
+void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs) {
+  // The entries and the count in locals: pairs growing might, for all the compiler knows, change
   // the members, which it would then reload at every candidate.
   const std::span<const Entry> entries(entries_);
   std::size_t tested = 0;
@@ -185,7 +229,7 @@ void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies) {
       if (!entry.is_bottom && !other.is_bottom) continue;
       const std::uint32_t a = proxies[entry.proxy].id;
       const std::uint32_t b = proxies[other.proxy].id;
-      pairs_.push_back({std::min(a, b), std::max(a, b)});
+      append(pairs, {std::min(a, b), std::max(a, b)});
     }
   }
   candidates_tested_ = tested;

@@ -13,8 +13,9 @@ namespace gp {
 
 /// One shape's entry for a broadphase step.
 struct BroadphaseProxy {
-  std::uint32_t id;  ///< the caller's handle for the shape, reported back in pairs
+  // The box first: ahead of the id, its 16-byte alignment would pad the proxy to 64 bytes.
   Aabb bounds;       ///< m, world; a non-finite one makes find_pairs report no pair
+  std::uint32_t id;  ///< the caller's handle for the shape, reported back in pairs
   bool is_static;    ///< its body never moves: two static proxies are never paired
 };
 
@@ -44,11 +45,12 @@ class SweepAndPrune {
   /// make speculative contacts with the same margin.
   explicit SweepAndPrune(double margin = 0.0) : half_margin_(0.5 * margin) {}
 
-  /// The pairs of `proxies` whose boxes, each grown by margin / 2 on every side, overlap
-  /// (touching counts), except static with static; each pair once, in no particular order. The
-  /// result lives until the next call. Allocates nothing once its buffers have grown to the
-  /// scene. Fastest when each proxy keeps its position in `proxies` from call to call.
-  const std::vector<ProxyPair>& find_pairs(std::span<const BroadphaseProxy> proxies);
+  /// Replaces `pairs` with the pairs of `proxies` (at most 2³⁰ of them) whose boxes, each grown
+  /// by margin / 2 on every side, overlap (touching counts), except static with static; each pair
+  /// once, in no particular order. The caller keeps the pairs, so that it can filter and sort them
+  /// where they are. Allocates nothing once its buffers, and `pairs`, have grown to the scene.
+  /// Fastest when each proxy keeps its position in `proxies` from call to call.
+  void find_pairs(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs);
 
   /// How many pairs of band entries the last call compared, those found plus those rejected:
   /// the measure of its cost.
@@ -59,34 +61,41 @@ class SweepAndPrune {
   std::size_t entries_resorted() const { return entries_resorted_; }
 
  private:
-  /// A proxy's grown box, in one of the bands it spans.
+  /// A proxy's grown box, in one of the bands it spans. 40 bytes: there are more entries than
+  /// proxies, and they are most of the broadphase's memory.
   struct Entry {
-    std::int64_t band;
     double left;
     double right;
     double bottom;
     double top;
-    std::uint32_t proxy;  ///< index in the proxies of the call
-    bool is_static;
+    std::int32_t band;
+    std::uint32_t proxy : 30;  ///< index in the proxies of the call
+    std::uint32_t is_static : 1;
     /// The band holds the box's bottom. The bottom of an overlap is the higher of the two
     /// bottoms, so the band holds it when it holds either box's bottom.
-    bool is_bottom;
+    std::uint32_t is_bottom : 1;
 
     bool operator<(const Entry& other) const {
       return band != other.band ? band < other.band : left < other.left;
     }
   };
 
-  /// The bands [first, last] a proxy's entries are in; none when first > last.
+  /// The bands [first, last] a proxy's entries are in; none when first > last. The bands that
+  /// hold entries number at most about 2N (see bands_suit), so 32 bits count them.
   struct BandRange {
-    std::int64_t first;
-    std::int64_t last;
+    std::int32_t first;
+    std::int32_t last;
   };
 
   /// Twice the median box height (m), widened when needed so that there are at most about N
   /// bands across `bottoms_range` (m), the spread of the boxes' bottoms: a single huge box then
   /// cannot make more entries than there are proxies.
-  double ideal_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range);
+  double ideal_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range) const;
+  /// The height of rank N / 2 (from 0) of the grown boxes (m).
+  double median_height(std::span<const BroadphaseProxy> proxies) const;
+  double grown_height(const BroadphaseProxy& proxy) const {
+    return proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_;
+  }
   /// Keeps the bands of the last call when they still suit boxes whose grown bottoms span
   /// [lowest, highest] (m); else places them anew and forgets the entries.
   void place_bands(std::span<const BroadphaseProxy> proxies, double lowest, double highest);
@@ -105,9 +114,13 @@ class SweepAndPrune {
   /// (m): drops those whose box left their band, refreshes the others, adds those of the bands
   /// newly spanned, and sorts them again.
   void update_entries(std::span<const BroadphaseProxy> proxies, double highest);
+  /// Makes every entry anew and sorts them, when none is kept from the last call.
+  void build_entries(std::span<const BroadphaseProxy> proxies);
   /// Restores the order of the entries kept from the last call, then merges in those added.
   void sort_entries();
-  void sweep(std::span<const BroadphaseProxy> proxies);
+  void sweep(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs);
+  /// Proxy `p`'s entry in `band`.
+  Entry entry(std::span<const BroadphaseProxy> proxies, std::int32_t band, std::uint32_t p) const;
   /// Drops the entries and the bands: the next call places and sorts them from scratch.
   void forget();
 
@@ -116,12 +129,10 @@ class SweepAndPrune {
   double band_height_ = 0.0;  // m; 0 while no bands are placed
   std::size_t candidates_tested_ = 0;
   std::size_t entries_resorted_ = 0;
-  std::vector<double> heights_;       // scratch for the median
   std::vector<BandRange> bands_;      // per proxy of the last call
   std::vector<BandRange> new_bands_;  // per proxy of this call
   std::vector<Entry> entries_;        // sorted by band, then left, between calls
   std::vector<Entry> added_;          // scratch: entries of bands newly spanned
-  std::vector<ProxyPair> pairs_;
 };
 
 }  // namespace gp

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/capacity.hpp"
+
 namespace gp {
 
 namespace {
@@ -13,6 +15,7 @@ void counting_pass(const std::vector<ProxyPair>& in, std::vector<ProxyPair>& out
   std::fill(starts.begin(), starts.end(), 0u);
   for (const ProxyPair& p : in) ++starts[digit(p) + 1];
   for (std::size_t id = 1; id < starts.size(); ++id) starts[id] += starts[id - 1];
+  reserve_for(out, in.size());
   out.resize(in.size());
   for (const ProxyPair& p : in) out[starts[digit(p)]++] = p;
 }

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <variant>
 
+#include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
 
 void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
                      bool moves) {
-  while (first_.size() <= body) first_.push_back(static_cast<std::uint32_t>(size()));
+  while (first_.size() <= body) append(first_, static_cast<std::uint32_t>(size()));
   GeometryView kept = view_of(local.geometry());
   if (const auto* polygon = std::get_if<PolygonView>(&kept)) {
     const std::size_t count = polygon->vertices.size();
@@ -19,7 +20,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
     polygon_vertices_ += count;
   }
-  records_.push_back({kept, body, moves, restitution, friction});
+  append(records_, {PackedGeometry(kept), restitution, friction, body, moves});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {
@@ -27,21 +28,6 @@ BodyShapes::Range BodyShapes::of_body(BodyId body) const {
   const std::uint32_t first = body < first_.size() ? first_[body] : end;
   const std::uint32_t last = body + 1 < first_.size() ? first_[body + 1] : end;
   return {first, last};
-}
-
-void BodyShapes::place(std::span<const Vec2> position, std::span<const double> angle,
-                       WorldShapes& world) const {
-  const bool first = world.size() != records_.size();
-  if (first) world.lay_out(records_.size(), polygon_vertices_);
-  for (std::size_t i = 0; i < records_.size(); ++i) {
-    const ShapeRecord& r = records_[i];
-    if (!r.moves && !first) continue;
-    const auto* disc = std::get_if<Circle>(&r.local);
-    const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
-    world.place(i, r.local,
-                turning_moves_it ? Transform(position[r.body], angle[r.body])
-                                 : Transform(position[r.body]));
-  }
 }
 
 }  // namespace gp

@@ -4,16 +4,21 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
+#include "engine/geometry/packed_geometry.hpp"
+#include "engine/geometry/transform.hpp"
 #include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
 
 /// A shape of a body, in the body frame centred on the centre of mass; a polygon's vertices are
-/// BodyShapes' to keep.
+/// BodyShapes' to keep. Made when asked for from a packed record: hold it by value or by a const
+/// reference bound to the call.
 struct ShapeRecord {
   GeometryView local;
   BodyId body;
@@ -29,7 +34,10 @@ class BodyShapes {
   /// body order.
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
-  const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
+  ShapeRecord operator[](std::size_t i) const {
+    const Record& r = records_[i];
+    return {r.local.view(), r.body, r.moves, r.restitution, r.friction};
+  }
 
   /// The indices [first, last) of the shapes of `body`.
   struct Range {
@@ -41,15 +49,44 @@ class BodyShapes {
   /// Places every moving shape by its body's centre of mass `position` and orientation `angle`,
   /// indexed by body id (static shapes once, on the first call).
   void place(std::span<const Vec2> position, std::span<const double> angle,
-             WorldShapes& world) const;
+             WorldShapes& world) const {
+    place([&](BodyId body) { return std::pair(position[body], angle[body]); }, world);
+  }
+  /// The same with the centre of mass and orientation of each body given by `pose(body)`, a
+  /// std::pair<Vec2, double>, for poses computed as they are needed rather than stored.
+  template <typename Pose>
+  void place(const Pose& pose, WorldShapes& world) const;
 
  private:
-  std::vector<ShapeRecord> records_;
+  // A ShapeRecord in 72 bytes rather than 96.
+  struct Record {
+    PackedGeometry local;
+    double restitution;
+    double friction;
+    BodyId body;
+    bool moves;
+  };
+  std::vector<Record> records_;
   // Per polygon, its vertices then its normals: a block each, which stays where it is as shapes
   // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
   std::vector<std::unique_ptr<Vec2[]>> polygons_;
   std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
+
+template <typename Pose>
+void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
+  const bool first = world.size() != records_.size();
+  if (first) world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
+  for (std::size_t i = 0; i < records_.size(); ++i) {
+    const Record& r = records_[i];
+    if (!r.moves && !first) continue;
+    const GeometryView local = r.local.view();
+    const auto* disc = std::get_if<Circle>(&local);
+    const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
+    const auto [position, angle] = pose(r.body);
+    world.place(i, local, turning_moves_it ? Transform(position, angle) : Transform(position));
+  }
+}
 
 }  // namespace gp

@@ -35,14 +35,12 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
     body_of_[i] = shapes[i].body;
     // A static proxy is one whose body collisions cannot move: the broadphase pairs no two.
-    proxies_[i] = {i, start[i].bounds.united(end[i].bounds), !dynamic[body_of_[i]]};
+    proxies_[i] = {start.bounds(i).united(end.bounds(i)), i, !dynamic[body_of_[i]]};
   }
-  const auto& found = broadphase_.find_pairs(proxies_);
-  pairs_.clear();
-  for (const ProxyPair& p : found) {
-    // Two parts of one body never collide.
-    if (body_of_[p.first] != body_of_[p.second]) pairs_.push_back(p);
-  }
+  broadphase_.find_pairs(proxies_, pairs_);
+  // Two parts of one body never collide.
+  std::erase_if(pairs_,
+                [this](const ProxyPair& p) { return body_of_[p.first] == body_of_[p.second]; });
   // Sorted pairs make the order of the solver, and so the result, independent of the
   // broadphase's internal order.
   pair_order_.sort(pairs_, static_cast<std::uint32_t>(shapes.size()));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
 #include "gamephysics/models/dd/torque.hpp"
 #include "gamephysics/models/gd/gravitational_acceleration.hpp"
@@ -10,33 +11,64 @@
 
 namespace gp {
 
+bool ForceModel::beyond_gravity(const BodyForces& forces) {
+  return forces.force != Vec2::Zero() || forces.torque != 0.0 || forces.force_at_point ||
+         forces.callback;
+}
+
 void ForceModel::add(BodyId id, BodyForces forces) {
-  ids_.push_back(id);
-  rotates_.push_back(forces.inverse_moment > 0.0);
-  forces_.push_back(std::move(forces));
+  const auto entry = static_cast<std::uint32_t>(ids_.size());
+  append(ids_, id);
+  append(masses_, forces.mass);
+  append(rotates_, forces.inverse_moment > 0.0);
+  if (beyond_gravity(forces)) applied_.push_back({entry, std::move(forces)});
 }
 
-void ForceModel::set_callback(BodyId id, ForceCallback callback) {
-  const auto it = std::find(ids_.begin(), ids_.end(), id);
-  if (it != ids_.end()) forces_[it - ids_.begin()].callback = std::move(callback);
+void ForceModel::set_callback(BodyId id, double inverse_moment, ForceCallback callback) {
+  const auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
+  if (it == ids_.end() || *it != id) return;
+  const auto entry = static_cast<std::uint32_t>(it - ids_.begin());
+  auto at = std::lower_bound(applied_.begin(), applied_.end(), entry,
+                             [](const Applied& a, std::uint32_t e) { return a.entry < e; });
+  if (at == applied_.end() || at->entry != entry) {
+    // A body of gravity only so far: its constant forces are none.
+    at = applied_.insert(
+        at,
+        {entry, {masses_[entry], inverse_moment, Vec2::Zero(), 0.0, false, Vec2::Zero(), nullptr}});
+  }
+  at->forces.callback = std::move(callback);
 }
-
 bool ForceModel::constant() const {
   if (G_) return false;
-  return std::none_of(forces_.begin(), forces_.end(),
-                      [](const BodyForces& f) { return f.force_at_point || f.callback; });
+  return std::none_of(applied_.begin(), applied_.end(), [](const Applied& a) {
+    return a.forces.force_at_point || a.forces.callback;
+  });
 }
 
 bool ForceModel::any_applied() const {
-  return std::any_of(forces_.begin(), forces_.end(), [](const BodyForces& f) {
-    return f.force != Vec2::Zero() || f.torque != 0.0 || f.callback;
+  return std::any_of(applied_.begin(), applied_.end(), [](const Applied& a) {
+    return a.forces.force != Vec2::Zero() || a.forces.torque != 0.0 || a.forces.callback;
   });
 }
 
 void ForceModel::evaluate(double t, const MotionState& s, Accelerations& out) const {
+  auto applied = applied_.begin();
   for (std::size_t k = 0; k < ids_.size(); ++k) {
     const BodyId j = ids_[k];
-    const BodyForces& f = forces_[k];
+    Vec2 g = gravity_;
+    if (G_) {
+      for (std::size_t other = 0; other < ids_.size(); ++other) {
+        if (other == k) continue;
+        const BodyId i = ids_[other];
+        g += gd::gravitational_acceleration(*G_, masses_[other], s.position[j] - s.position[i]);
+      }
+    }
+    if (applied == applied_.end() || applied->entry != k) {
+      out.linear[j] = im::translational_acceleration(g, Vec2::Zero(), masses_[k]);
+      out.angular[j] = 0.0;
+      continue;
+    }
+    const BodyForces& f = (applied++)->forces;
     Vec2 force = f.force;
     double torque = f.torque;
     if (f.force_at_point) {
@@ -49,16 +81,7 @@ void ForceModel::evaluate(double t, const MotionState& s, Accelerations& out) co
       force += w.force;
       torque += w.torque;
     }
-    Vec2 g = gravity_;
-    if (G_) {
-      for (std::size_t other = 0; other < ids_.size(); ++other) {
-        if (other == k) continue;
-        const BodyId i = ids_[other];
-        g +=
-            gd::gravitational_acceleration(*G_, forces_[other].mass, s.position[j] - s.position[i]);
-      }
-    }
-    out.linear[j] = im::translational_acceleration(g, force, f.mass);
+    out.linear[j] = im::translational_acceleration(g, force, masses_[k]);
     out.angular[j] = rotates_[k] ? im::angular_acceleration(torque, 1.0 / f.inverse_moment) : 0.0;
   }
 }

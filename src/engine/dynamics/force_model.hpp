@@ -20,7 +20,7 @@ using BodyId = std::uint32_t;
 /// F_j(t), τ_j(t) of one body, given the time [s] and the body's state at that time.
 using ForceCallback = std::function<Wrench(double t, BodyId body, const BodyState& state)>;
 
-/// What each dynamic body is pushed by; fixed when the body is added, except callbacks.
+/// What a dynamic body is pushed by; fixed when the body is added, except callbacks.
 struct BodyForces {
   double mass;            ///< kg
   double inverse_moment;  ///< 1/(kg·m²); 0 if the body does not rotate
@@ -37,7 +37,9 @@ class ForceModel {
 
   /// Registers a dynamic body (ids must be added in increasing order).
   void add(BodyId id, BodyForces forces);
-  void set_callback(BodyId id, ForceCallback callback);
+  /// Adds a time-dependent force to dynamic body `id`, whose inverse moment of inertia is
+  /// `inverse_moment` (1/(kg·m²), 0 if it does not rotate).
+  void set_callback(BodyId id, double inverse_moment, ForceCallback callback);
 
   /// Accelerations of the dynamic bodies at time `t` in state `s` (other entries untouched).
   void evaluate(double t, const MotionState& s, Accelerations& out) const;
@@ -54,11 +56,21 @@ class ForceModel {
   const std::vector<char>& rotates() const { return rotates_; }
 
  private:
+  /// The forces of the body at entry `entry` of bodies(), when it has more than gravity.
+  struct Applied {
+    std::uint32_t entry;
+    BodyForces forces;
+  };
+  /// Whether `forces` push the body beyond gravity, so that it needs an Applied.
+  static bool beyond_gravity(const BodyForces& forces);
+
   Vec2 gravity_;
   std::optional<double> G_;
   std::vector<BodyId> ids_;
-  std::vector<BodyForces> forces_;
+  std::vector<double> masses_;  // per entry of bodies()
   std::vector<char> rotates_;
+  // Most bodies of a game feel gravity only: only the others keep their forces, by entry.
+  std::vector<Applied> applied_;
 };
 
 }  // namespace gp

@@ -61,7 +61,6 @@ class VelocityVerlet final : public Integrator {
   void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
     const std::size_t n = s.position.size();
     a0_.resize(n);
-    a1_.resize(n);
     forces.evaluate(t, s, a0_);
     const auto& ids = forces.bodies();
     const auto& rotates = forces.rotates();
@@ -80,6 +79,8 @@ class VelocityVerlet final : public Integrator {
     for (std::size_t k = 0; k < ids.size(); ++k) {
       accelerate(s, ids[k], rotates[k], a0_.linear[ids[k]], a0_.angular[ids[k]], h);
     }
+    // Sized here: constant forces, the common case, never need the end's accelerations.
+    a1_.resize(n);
     forces.evaluate(t + h, s, a1_);
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];

@@ -7,9 +7,8 @@ namespace gp {
 namespace {
 
 WorldShape place(const Circle& circle, const Transform& transform) {
-  const Vec2 center = transform.apply(circle.center);
-  const Vec2 extent(circle.radius, circle.radius);
-  return {Circle{center, circle.radius}, Aabb{center - extent, center + extent}};
+  const Circle placed{transform.apply(circle.center), circle.radius};
+  return {placed, bounds_of(placed)};
 }
 
 WorldShape place(const PolygonView& polygon, const Transform& transform) {
@@ -22,10 +21,8 @@ WorldShape place(const PolygonView& polygon, const Transform& transform) {
 }
 
 WorldShape place(const Segment& segment, const Transform& transform) {
-  const Vec2 a = transform.apply(segment.a);
-  const Vec2 b = transform.apply(segment.b);
-  const Vec2 extent(segment.radius, segment.radius);
-  return {Segment{a, b, segment.radius}, Aabb{a.cwiseMin(b) - extent, a.cwiseMax(b) + extent}};
+  const Segment placed{transform.apply(segment.a), transform.apply(segment.b), segment.radius};
+  return {placed, bounds_of(placed)};
 }
 
 }  // namespace

@@ -24,13 +24,26 @@ struct WorldShapeView {
   Aabb bounds;
 
   WorldShapeView() = default;
-  WorldShapeView(const GeometryView& placed, const Aabb& box) : geometry(placed), bounds(box) {}
+  /// `placed`: a GeometryView or one of its alternatives, which then goes in without a variant
+  /// made on the way.
+  template <typename Geometry>
+  WorldShapeView(const Geometry& placed, const Aabb& box) : geometry(placed), bounds(box) {}
   /// Views `shape`, which must outlive the view (as a std::string does its std::string_view).
   WorldShapeView(const WorldShape& shape)  // NOLINT(google-explicit-constructor)
       : geometry(view_of(shape.geometry)), bounds(shape.bounds) {}
 
   ShapeKind kind() const { return kind_of(geometry); }
 };
+
+/// The tight bounding boxes of a disc and of a segment (m).
+inline Aabb bounds_of(const Circle& circle) {
+  const Vec2 extent(circle.radius, circle.radius);
+  return {circle.center - extent, circle.center + extent};
+}
+inline Aabb bounds_of(const Segment& segment) {
+  const Vec2 extent(segment.radius, segment.radius);
+  return {segment.a.cwiseMin(segment.b) - extent, segment.a.cwiseMax(segment.b) + extent};
+}
 
 /// The shape `local` (body frame) moved into the world by its body's `transform`.
 WorldShape to_world(const GeometryView& local, const Transform& transform);

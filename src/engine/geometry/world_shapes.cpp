@@ -4,36 +4,46 @@
 
 namespace gp {
 
-void WorldShapes::lay_out(std::size_t count, std::size_t polygon_vertices) {
-  shapes_.assign(count, WorldShapeView{});
+void WorldShapes::lay_out(std::size_t count, std::size_t polygons, std::size_t polygon_vertices) {
+  shapes_.assign(count, PackedGeometry{});
   pool_.clear();
   // The pool never grows past this, so that the views into it stay valid.
-  pool_.reserve(2 * polygon_vertices);
+  pool_.reserve(2 * polygon_vertices + 2 * polygons);
 }
 
 void WorldShapes::place(std::size_t i, const GeometryView& local, const Transform& transform) {
-  const auto* polygon = std::get_if<PolygonView>(&local);
-  if (polygon == nullptr) {
-    // A disc or a segment is copied into its view: nothing refers to the temporary.
-    shapes_[i] = WorldShapeView(to_world(local, transform));
+  // A disc or a segment straight into its packed form: through to_world, it would be built as a
+  // WorldShape, with room for a polygon, first.
+  if (const auto* circle = std::get_if<Circle>(&local)) {
+    shapes_[i] = PackedGeometry(Circle{transform.apply(circle->center), circle->radius});
     return;
   }
+  if (const auto* segment = std::get_if<Segment>(&local)) {
+    shapes_[i] = PackedGeometry(
+        Segment{transform.apply(segment->a), transform.apply(segment->b), segment->radius});
+    return;
+  }
+  const auto* polygon = std::get_if<PolygonView>(&local);
   const std::size_t count = polygon->vertices.size();
+  const std::size_t room_size = 2 * count + 2;
   Vec2* room = nullptr;
-  if (const auto* placed = std::get_if<PolygonView>(&shapes_[i].geometry)) {
+  if (shapes_[i].kind() == ShapeKind::kPolygon) {
     // The room it was first given, reached through the pool: its view only reads.
-    room = pool_.data() + (placed->vertices.data() - pool_.data());
+    const Vec2* placed = std::get<PolygonView>(shapes_[i].view()).vertices.data();
+    room = pool_.data() + (placed - pool_.data());
   } else {
-    if (pool_.size() + 2 * count > pool_.capacity()) {
+    if (pool_.size() + room_size > pool_.capacity()) {
       throw std::logic_error("WorldShapes::place: more polygon vertices than laid out");
     }
-    pool_.resize(pool_.size() + 2 * count);
-    room = pool_.data() + pool_.size() - 2 * count;
+    pool_.resize(pool_.size() + room_size);
+    room = pool_.data() + pool_.size() - room_size;
   }
   const std::span<Vec2> vertices(room, count);
   const std::span<Vec2> normals(room + count, count);
-  shapes_[i] = {PolygonView{vertices, normals},
-                place_polygon(*polygon, transform, vertices, normals)};
+  const Aabb bounds = place_polygon(*polygon, transform, vertices, normals);
+  room[2 * count] = bounds.min;
+  room[2 * count + 1] = bounds.max;
+  shapes_[i] = PackedGeometry(PolygonView{vertices, normals});
 }
 
 }  // namespace gp

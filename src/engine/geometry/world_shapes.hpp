@@ -1,11 +1,13 @@
 #pragma once
 // Every shape of a space placed in the world at one instant, stored compactly: a disc or a segment
-// is held in its view, and the polygons' vertices and normals share one pool sized to their own
-// vertex counts instead of a WorldShape's room for kMaxPolygonVertices each.
+// is packed whole, its box made again when it is read, and the polygons' vertices, normals and
+// boxes share one pool sized to their own vertex counts instead of a WorldShape's room for
+// kMaxPolygonVertices each.
 
 #include <cstddef>
 #include <vector>
 
+#include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/world_shape.hpp"
 
 namespace gp {
@@ -17,9 +19,9 @@ class WorldShapes {
   WorldShapes(const WorldShapes&) = delete;
   WorldShapes& operator=(const WorldShapes&) = delete;
 
-  /// Forgets every placement and makes room for `count` shapes whose polygons have
+  /// Forgets every placement and makes room for `count` shapes, `polygons` of them polygons with
   /// `polygon_vertices` vertices in all. Each shape must then be placed before it is read.
-  void lay_out(std::size_t count, std::size_t polygon_vertices);
+  void lay_out(std::size_t count, std::size_t polygons, std::size_t polygon_vertices);
   /// Forgets every placement, so that the shapes are laid out again.
   void clear() { shapes_.clear(); }
 
@@ -28,11 +30,28 @@ class WorldShapes {
   void place(std::size_t i, const GeometryView& local, const Transform& transform);
 
   std::size_t size() const { return shapes_.size(); }
-  const WorldShapeView& operator[](std::size_t i) const { return shapes_[i]; }
+  /// Shape `i` as placed, viewed: made when asked for, so hold it by value or by a const
+  /// reference bound to the call.
+  /// The box of shape `i` as placed, without the view around it.
+  Aabb bounds(std::size_t i) const {
+    const PackedGeometry& shape = shapes_[i];
+    switch (shape.kind()) {
+      case ShapeKind::kCircle:
+        return bounds_of(shape.circle());
+      case ShapeKind::kSegment:
+        return bounds_of(shape.segment());
+      case ShapeKind::kPolygon:
+        break;
+    }
+    const PolygonView polygon = shape.polygon();
+    const Vec2* box = polygon.normals.data() + polygon.normals.size();
+    return {box[0], box[1]};
+  }
+  WorldShapeView operator[](std::size_t i) const { return {shapes_[i].view(), bounds(i)}; }
 
  private:
-  std::vector<WorldShapeView> shapes_;
-  std::vector<Vec2> pool_;  // per polygon, its vertices then its normals
+  std::vector<PackedGeometry> shapes_;
+  std::vector<Vec2> pool_;  // per polygon, its vertices, its normals, its box's min and max
 };
 
 }  // namespace gp
