@@ -90,8 +90,6 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
                                        const MotionState& s, const std::vector<WarmStart>& previous,
                                        double impulse_scale, ContactSet& contacts) const {
   contacts.clear();
-  // A pair makes one contact at most.
-  contacts.reserve(pairs.size());
   auto old = previous.begin();
   for (const ProxyPair& p : pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);

@@ -10,11 +10,9 @@ void ContactSet::clear() {
   blocks_.clear();
 }
 
-void ContactSet::reserve(std::size_t contacts) {
-  reserve_for(contacts_, contacts);
-}
-
 Contact& ContactSet::append(int count) {
+  // Grown as contacts come rather than for every candidate pair, of which many make none.
+  reserve_for(contacts_, contacts_.size() + 1);
   reserve_for(points_, points_.size() + static_cast<std::size_t>(count));
   Contact& c = contacts_.emplace_back();
   c.first_point = static_cast<std::uint32_t>(points_.size());

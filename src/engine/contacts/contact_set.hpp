@@ -21,9 +21,6 @@ class ContactSet {
   /// Of all the contacts together.
   std::size_t point_count() const { return points_.size(); }
   void clear();
-  /// Room for `contacts` contacts (their points grow as they are appended, by a quarter at a
-  /// time, so that a scene of one-point contacts keeps room for one point each).
-  void reserve(std::size_t contacts);
 
   Contact& operator[](std::size_t i) { return contacts_[i]; }
   const Contact& operator[](std::size_t i) const { return contacts_[i]; }
