@@ -223,9 +223,9 @@ void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies, std::vector<
          ++j) {
       const Entry& other = entries[j];
       ++tested;
-      if ((entry.tag & other.tag & Entry::kStatic) != 0) continue;
+      if (entry.has(Entry::kStatic) && other.has(Entry::kStatic)) continue;
       if (other.bottom > entry.top || entry.bottom > other.top) continue;
-      if (((entry.tag | other.tag) & Entry::kBottom) == 0) continue;
+      if (!entry.has(Entry::kBottom) && !other.has(Entry::kBottom)) continue;
       const std::uint32_t a = proxies[entry.proxy()].id;
       const std::uint32_t b = proxies[other.proxy()].id;
       append(pairs, {std::min(a, b), std::max(a, b)});

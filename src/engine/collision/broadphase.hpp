@@ -69,8 +69,7 @@ class SweepAndPrune {
     double bottom;
     double top;
     std::int32_t band;
-    /// Four times the index in the proxies of the call, plus the flags below: the sweep tests
-    /// the flags of two entries at once, with one bitwise operation.
+    /// Four times the index in the proxies of the call, plus the flags below.
     std::uint32_t tag;
     static constexpr std::uint32_t kStatic = 1;
     /// The band holds the box's bottom. The bottom of an overlap is the higher of the two
@@ -78,6 +77,7 @@ class SweepAndPrune {
     static constexpr std::uint32_t kBottom = 2;
 
     std::uint32_t proxy() const { return tag >> 2; }
+    bool has(std::uint32_t flag) const { return (tag & flag) != 0; }
 
     bool operator<(const Entry& other) const {
       return band != other.band ? band < other.band : left < other.left;
