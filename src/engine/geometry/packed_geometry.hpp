@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <span>
-#include <variant>
 
 #include "engine/geometry/shape.hpp"
 
@@ -14,7 +13,7 @@ namespace gp {
 class PackedGeometry {
  public:
   PackedGeometry() : circle_{0.0, 0.0, 0.0}, kind_(ShapeKind::kCircle) {}
-  /// Packs `geometry`; a polygon's vertices, then as many normals right after them, stay where
+  /// Packs a geometry; a polygon's vertices, then as many normals right after them, stay where
   /// they are stored.
   explicit PackedGeometry(const Circle& circle)
       : circle_{circle.center.x(), circle.center.y(), circle.radius}, kind_(ShapeKind::kCircle) {}
@@ -24,8 +23,6 @@ class PackedGeometry {
   explicit PackedGeometry(const PolygonView& polygon)
       : polygon_{polygon.vertices.data(), static_cast<std::uint32_t>(polygon.vertices.size())},
         kind_(ShapeKind::kPolygon) {}
-  explicit PackedGeometry(const GeometryView& geometry)
-      : PackedGeometry(std::visit([](const auto& g) { return PackedGeometry(g); }, geometry)) {}
 
   ShapeKind kind() const { return kind_; }
 
