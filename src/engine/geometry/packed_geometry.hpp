@@ -38,9 +38,11 @@ class PackedGeometry {
     return polygon();
   }
   /// The geometry of each kind, for a caller that has switched on kind() already.
-  Circle circle() const { return {Vec2(circle_.x, circle_.y), circle_.radius}; }
+  // The points are loaded whole, not built from two scalars: that goes through the stack, and the
+  // wide load of the view made from them stalls on the two narrow stores.
+  Circle circle() const { return {Vec2::Map(&circle_.x), circle_.radius}; }
   Segment segment() const {
-    return {Vec2(segment_.ax, segment_.ay), Vec2(segment_.bx, segment_.by), segment_.radius};
+    return {Vec2::Map(&segment_.ax), Vec2::Map(&segment_.bx), segment_.radius};
   }
   PolygonView polygon() const {
     return {std::span(polygon_.points, polygon_.count),
