@@ -116,9 +116,8 @@ SweepAndPrune::Entry SweepAndPrune::entry(std::span<const BroadphaseProxy> proxi
                grown.min.y(),
                grown.max.y(),
                band,
-               p,
-               proxies[p].is_static,
-               band == new_bands_[p].first};
+               p << 2 | (proxies[p].is_static ? Entry::kStatic : 0) |
+                   (band == new_bands_[p].first ? Entry::kBottom : 0)};
 }
 
 void SweepAndPrune::update_entries(std::span<const BroadphaseProxy> proxies, double highest) {
@@ -138,10 +137,10 @@ void SweepAndPrune::update_entries(std::span<const BroadphaseProxy> proxies, dou
   // bands now are kept in place, where they are nearly sorted still.
   std::size_t kept = 0;
   for (const Entry& old : entries_) {
-    if (old.proxy >= proxies.size()) continue;
-    const BandRange& now = new_bands_[old.proxy];
+    if (old.proxy() >= proxies.size()) continue;
+    const BandRange& now = new_bands_[old.proxy()];
     if (old.band < now.first || old.band > now.last) continue;
-    entries_[kept++] = entry(proxies, old.band, old.proxy);
+    entries_[kept++] = entry(proxies, old.band, old.proxy());
   }
   entries_.resize(kept);
   added_.clear();
@@ -224,11 +223,11 @@ void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies, std::vector<
          ++j) {
       const Entry& other = entries[j];
       ++tested;
-      if (entry.is_static && other.is_static) continue;
+      if (entry.has(Entry::kStatic) && other.has(Entry::kStatic)) continue;
       if (other.bottom > entry.top || entry.bottom > other.top) continue;
-      if (!entry.is_bottom && !other.is_bottom) continue;
-      const std::uint32_t a = proxies[entry.proxy].id;
-      const std::uint32_t b = proxies[other.proxy].id;
+      if (!entry.has(Entry::kBottom) && !other.has(Entry::kBottom)) continue;
+      const std::uint32_t a = proxies[entry.proxy()].id;
+      const std::uint32_t b = proxies[other.proxy()].id;
       append(pairs, {std::min(a, b), std::max(a, b)});
     }
   }

@@ -69,11 +69,15 @@ class SweepAndPrune {
     double bottom;
     double top;
     std::int32_t band;
-    std::uint32_t proxy : 30;  ///< index in the proxies of the call
-    std::uint32_t is_static : 1;
+    /// Four times the index in the proxies of the call, plus the flags below.
+    std::uint32_t tag;
+    static constexpr std::uint32_t kStatic = 1;
     /// The band holds the box's bottom. The bottom of an overlap is the higher of the two
     /// bottoms, so the band holds it when it holds either box's bottom.
-    std::uint32_t is_bottom : 1;
+    static constexpr std::uint32_t kBottom = 2;
+
+    std::uint32_t proxy() const { return tag >> 2; }
+    bool has(std::uint32_t flag) const { return (tag & flag) != 0; }
 
     bool operator<(const Entry& other) const {
       return band != other.band ? band < other.band : left < other.left;

@@ -10,15 +10,13 @@
 
 #include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
-#include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
 
 /// A shape of a body, in the body frame centred on the centre of mass; a polygon's vertices are
-/// BodyShapes' to keep. Made when asked for from a packed record: hold it by value or by a const
-/// reference bound to the call.
+/// BodyShapes' to keep.
 struct ShapeRecord {
   GeometryView local;
   BodyId body;
@@ -34,10 +32,7 @@ class BodyShapes {
   /// body order.
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
-  ShapeRecord operator[](std::size_t i) const {
-    const Record& r = records_[i];
-    return {r.local.view(), r.body, r.moves, r.restitution, r.friction};
-  }
+  const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
 
   /// The indices [first, last) of the shapes of `body`.
   struct Range {
@@ -58,15 +53,9 @@ class BodyShapes {
   void place(const Pose& pose, WorldShapes& world) const;
 
  private:
-  // A ShapeRecord in 72 bytes rather than 96.
-  struct Record {
-    PackedGeometry local;
-    double restitution;
-    double friction;
-    BodyId body;
-    bool moves;
-  };
-  std::vector<Record> records_;
+  // Not packed as the placed shapes are: the contacts read them by reference, and a record made
+  // at each read costs more time than the 24 bytes per shape it would save.
+  std::vector<ShapeRecord> records_;
   // Per polygon, its vertices then its normals: a block each, which stays where it is as shapes
   // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
   std::vector<std::unique_ptr<Vec2[]>> polygons_;
@@ -79,13 +68,12 @@ void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
   const bool first = world.size() != records_.size();
   if (first) world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
   for (std::size_t i = 0; i < records_.size(); ++i) {
-    const Record& r = records_[i];
+    const ShapeRecord& r = records_[i];
     if (!r.moves && !first) continue;
-    const GeometryView local = r.local.view();
-    const auto* disc = std::get_if<Circle>(&local);
+    const auto* disc = std::get_if<Circle>(&r.local);
     const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
     const auto [position, angle] = pose(r.body);
-    world.place(i, local, turning_moves_it ? Transform(position, angle) : Transform(position));
+    world.place(i, r.local, turning_moves_it ? Transform(position, angle) : Transform(position));
   }
 }
 

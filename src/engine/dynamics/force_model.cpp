@@ -38,6 +38,7 @@ void ForceModel::set_callback(BodyId id, double inverse_moment, ForceCallback ca
   }
   at->forces.callback = std::move(callback);
 }
+
 bool ForceModel::constant() const {
   if (G_) return false;
   return std::none_of(applied_.begin(), applied_.end(), [](const Applied& a) {

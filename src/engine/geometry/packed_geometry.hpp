@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <span>
-#include <variant>
 
 #include "engine/geometry/shape.hpp"
 
@@ -14,7 +13,7 @@ namespace gp {
 class PackedGeometry {
  public:
   PackedGeometry() : circle_{0.0, 0.0, 0.0}, kind_(ShapeKind::kCircle) {}
-  /// Packs `geometry`; a polygon's vertices, then as many normals right after them, stay where
+  /// Packs a geometry; a polygon's vertices, then as many normals right after them, stay where
   /// they are stored.
   explicit PackedGeometry(const Circle& circle)
       : circle_{circle.center.x(), circle.center.y(), circle.radius}, kind_(ShapeKind::kCircle) {}
@@ -24,8 +23,6 @@ class PackedGeometry {
   explicit PackedGeometry(const PolygonView& polygon)
       : polygon_{polygon.vertices.data(), static_cast<std::uint32_t>(polygon.vertices.size())},
         kind_(ShapeKind::kPolygon) {}
-  explicit PackedGeometry(const GeometryView& geometry)
-      : PackedGeometry(std::visit([](const auto& g) { return PackedGeometry(g); }, geometry)) {}
 
   ShapeKind kind() const { return kind_; }
 
@@ -41,9 +38,11 @@ class PackedGeometry {
     return polygon();
   }
   /// The geometry of each kind, for a caller that has switched on kind() already.
-  Circle circle() const { return {Vec2(circle_.x, circle_.y), circle_.radius}; }
+  // The points are loaded whole, not built from two scalars: that goes through the stack, and the
+  // wide load of the view made from them stalls on the two narrow stores.
+  Circle circle() const { return {Vec2::Map(&circle_.x), circle_.radius}; }
   Segment segment() const {
-    return {Vec2(segment_.ax, segment_.ay), Vec2(segment_.bx, segment_.by), segment_.radius};
+    return {Vec2::Map(&segment_.ax), Vec2::Map(&segment_.bx), segment_.radius};
   }
   PolygonView polygon() const {
     return {std::span(polygon_.points, polygon_.count),

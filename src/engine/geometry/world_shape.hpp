@@ -35,14 +35,15 @@ struct WorldShapeView {
   ShapeKind kind() const { return kind_of(geometry); }
 };
 
-/// The tight bounding boxes of a disc and of a segment (m).
+/// The tight bounding boxes of a disc and of a segment (m). The radius is subtracted and added as
+/// a scalar, not as a Vec2 built from two (see Aabb::fattened).
 inline Aabb bounds_of(const Circle& circle) {
-  const Vec2 extent(circle.radius, circle.radius);
-  return {circle.center - extent, circle.center + extent};
+  return {(circle.center.array() - circle.radius).matrix(),
+          (circle.center.array() + circle.radius).matrix()};
 }
 inline Aabb bounds_of(const Segment& segment) {
-  const Vec2 extent(segment.radius, segment.radius);
-  return {segment.a.cwiseMin(segment.b) - extent, segment.a.cwiseMax(segment.b) + extent};
+  return {(segment.a.cwiseMin(segment.b).array() - segment.radius).matrix(),
+          (segment.a.cwiseMax(segment.b).array() + segment.radius).matrix()};
 }
 
 /// The shape `local` (body frame) moved into the world by its body's `transform`.

@@ -1,6 +1,7 @@
 #include "engine/geometry/world_shapes.hpp"
 
 #include <stdexcept>
+#include <variant>
 
 namespace gp {
 
@@ -23,13 +24,13 @@ void WorldShapes::place(std::size_t i, const GeometryView& local, const Transfor
         Segment{transform.apply(segment->a), transform.apply(segment->b), segment->radius});
     return;
   }
-  const auto* polygon = std::get_if<PolygonView>(&local);
-  const std::size_t count = polygon->vertices.size();
+  const auto& polygon = std::get<PolygonView>(local);
+  const std::size_t count = polygon.vertices.size();
   const std::size_t room_size = 2 * count + 2;
   Vec2* room = nullptr;
   if (shapes_[i].kind() == ShapeKind::kPolygon) {
     // The room it was first given, reached through the pool: its view only reads.
-    const Vec2* placed = std::get<PolygonView>(shapes_[i].view()).vertices.data();
+    const Vec2* placed = shapes_[i].polygon().vertices.data();
     room = pool_.data() + (placed - pool_.data());
   } else {
     if (pool_.size() + room_size > pool_.capacity()) {
@@ -40,7 +41,7 @@ void WorldShapes::place(std::size_t i, const GeometryView& local, const Transfor
   }
   const std::span<Vec2> vertices(room, count);
   const std::span<Vec2> normals(room + count, count);
-  const Aabb bounds = place_polygon(*polygon, transform, vertices, normals);
+  const Aabb bounds = place_polygon(polygon, transform, vertices, normals);
   room[2 * count] = bounds.min;
   room[2 * count + 1] = bounds.max;
   shapes_[i] = PackedGeometry(PolygonView{vertices, normals});

@@ -30,8 +30,6 @@ class WorldShapes {
   void place(std::size_t i, const GeometryView& local, const Transform& transform);
 
   std::size_t size() const { return shapes_.size(); }
-  /// Shape `i` as placed, viewed: made when asked for, so hold it by value or by a const
-  /// reference bound to the call.
   /// The box of shape `i` as placed, without the view around it.
   Aabb bounds(std::size_t i) const {
     const PackedGeometry& shape = shapes_[i];
@@ -47,6 +45,8 @@ class WorldShapes {
     const Vec2* box = polygon.normals.data() + polygon.normals.size();
     return {box[0], box[1]};
   }
+  /// Shape `i` as placed, viewed: made when asked for, so hold it by value or by a const
+  /// reference bound to the call.
   WorldShapeView operator[](std::size_t i) const { return {shapes_[i].view(), bounds(i)}; }
 
  private:
