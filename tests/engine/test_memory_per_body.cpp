@@ -1,9 +1,9 @@
 // Memory per body: the heap a space holds once a rain of discs has settled into a heap, per disc,
 // from two sizes of the same scene so that what does not grow with the bodies cancels. The issue
-// asks for at most 1 KiB per body; the contact constraints (about two per disc, 400 bytes each,
-// and the solver's copies of some) keep the engine above that for now, so the bound below holds
-// what has been reached (2.45 KiB, of which the contacts and their warm starts are 1.65) with a
-// margin of 15 % and is to come down with them.
+// asks for at most 1 KiB per body; the engine holds 1.33 KiB (1365 B), of which the contact
+// constraints (about two per disc, 208 bytes each with one point) and their warm starts are 0.59
+// KiB, so the bound below holds what has been reached with a margin of 15 % and is to come down
+// with them.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -53,5 +53,5 @@ std::size_t settled_heap(int discs) {
 TEST_CASE("A settled heap of discs holds a bounded heap per disc", "[FR:Simulation-Space]") {
   const double per_body = static_cast<double>(settled_heap(600) - settled_heap(200)) / 400.0;
   INFO("heap per body: " << per_body << " B");
-  CHECK(per_body < 2.8 * 1024);
+  CHECK(per_body < 1.55 * 1024);
 }
