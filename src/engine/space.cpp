@@ -59,10 +59,8 @@ BodyId Space::add_body(const BodyDef& def) {
   }
   if (!def.shapes.empty()) {
     ++bodies_with_shapes_;
-    bool any_dynamic_shape = false;
-    for (std::size_t i = 0; i < shapes_.size(); ++i)
-      any_dynamic_shape |= dynamic_[shapes_[i].body] != 0;
-    collides_ = bodies_with_shapes_ >= 2 && any_dynamic_shape;
+    dynamic_with_shapes_ = dynamic_with_shapes_ || dynamic;
+    collides_ = bodies_with_shapes_ >= 2 && dynamic_with_shapes_;
   }
   world_start_.clear();  // the static shapes are placed again on the next step
   return id;

@@ -97,6 +97,7 @@ class Space {
   std::vector<BodyId> kinematic_;
   bool collides_ = false;  // two shapes of different bodies, one of them dynamic
   std::size_t bodies_with_shapes_ = 0;
+  bool dynamic_with_shapes_ = false;  // a dynamic body has a shape
   BodyInertia inertia_;
   MotionState state_;
   ForceModel forces_;

@@ -36,6 +36,28 @@ TEST_CASE("A free point mass under gravity runs no collision or rotation stage",
   CHECK_FALSE(has(stages, "broadphase"));
 }
 
+TEST_CASE("Shapes collide only once two bodies have shapes and one of them is dynamic",
+          "[FR:Determine-Collisions]") {
+  gp::Space space(gp::Settings{});
+  const auto wall = [](const std::string& name, double y) {
+    gp::BodyDef def;
+    def.name = name;
+    def.type = gp::BodyType::Static;
+    def.shapes.push_back({gp::Shape::segment({-5, y}, {5, y})});
+    return def;
+  };
+  space.add_body(wall("floor", -5));
+  space.add_body(wall("ceiling", 5));
+  gp::BodyDef point;
+  point.name = "p";
+  point.mass = 1.0;
+  space.add_body(point);
+  // Two static walls and a dynamic body without a shape: nothing can touch.
+  CHECK(has(space.pipeline(), "collisions: skipped"));
+  space.add_body(disc("a", {0, 0}));
+  CHECK(has(space.pipeline(), "broadphase"));
+}
+
 TEST_CASE("Colliding discs and G bring in their stages with their SRS ids",
           "[FR:Simulation-Space][FR:Determine-Collisions]") {
   gp::Settings settings;
