@@ -200,7 +200,9 @@ void Space::advance(double h) {
     start_.velocity = state_.velocity;
     start_.angular_velocity = state_.angular_velocity;
   }
-  integrator_->advance(forces_, time_, h, state_);
+  // Under constant forces the accelerations the step started with are the integrator's too.
+  const bool known = collides_ && forces_.constant();
+  integrator_->advance(forces_, time_, h, state_, known ? &start_acceleration_ : nullptr);
   move_kinematic(h);
   if (!contacts_.empty()) {
     prepare_contacts(contacts_, inertia_, start_, h, settings_);

@@ -33,17 +33,25 @@ void accelerate(MotionState& s, BodyId j, bool rotates, const Vec2& mean_acceler
   }
 }
 
+// The accelerations at time t in state s, evaluated into `out` (sized for the bodies of s).
+const Accelerations& evaluated(const ForceModel& forces, double t, const MotionState& s,
+                               Accelerations& out) {
+  out.resize(s.position.size());
+  forces.evaluate(t, s, out);
+  return out;
+}
+
 /// Semi-implicit (symplectic) Euler: v₁ = v₀ + a(x₀) h, x₁ = x₀ + v₁ h. First order.
 class SymplecticEuler final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
-    a_.resize(s.position.size());
-    forces.evaluate(t, s, a_);
+  void advance(const ForceModel& forces, double t, double h, MotionState& s,
+               const Accelerations* start_acceleration) override {
+    const Accelerations& a = start_acceleration ? *start_acceleration : evaluated(forces, t, s, a_);
     const auto& ids = forces.bodies();
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
       const bool rotates = forces.rotates()[k];
-      accelerate(s, j, rotates, a_.linear[j], a_.angular[j], h);
+      accelerate(s, j, rotates, a.linear[j], a.angular[j], h);
       move(s, j, rotates, s.velocity[j], s.angular_velocity[j], h);
     }
   }
@@ -58,34 +66,28 @@ class SymplecticEuler final : public Integrator {
 /// exact when the acceleration is constant.
 class VelocityVerlet final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
-    const std::size_t n = s.position.size();
-    a0_.resize(n);
-    forces.evaluate(t, s, a0_);
+  void advance(const ForceModel& forces, double t, double h, MotionState& s,
+               const Accelerations* start_acceleration) override {
+    const Accelerations& a0 =
+        start_acceleration ? *start_acceleration : evaluated(forces, t, s, a0_);
     const auto& ids = forces.bodies();
     const auto& rotates = forces.rotates();
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
-      move(s, j, rotates[k], s.velocity[j] + 0.5 * h * a0_.linear[j],
-           s.angular_velocity[j] + 0.5 * h * a0_.angular[j], h);
-    }
-    if (forces.constant()) {
-      for (std::size_t k = 0; k < ids.size(); ++k) {
-        accelerate(s, ids[k], rotates[k], a0_.linear[ids[k]], a0_.angular[ids[k]], h);
-      }
-      return;
+      move(s, j, rotates[k], s.velocity[j] + 0.5 * h * a0.linear[j],
+           s.angular_velocity[j] + 0.5 * h * a0.angular[j], h);
     }
     // Forces that depend on velocity see the velocity predicted at the end of the step.
     for (std::size_t k = 0; k < ids.size(); ++k) {
-      accelerate(s, ids[k], rotates[k], a0_.linear[ids[k]], a0_.angular[ids[k]], h);
+      accelerate(s, ids[k], rotates[k], a0.linear[ids[k]], a0.angular[ids[k]], h);
     }
+    if (forces.constant()) return;
     // Sized here: constant forces, the common case, never need the end's accelerations.
-    a1_.resize(n);
-    forces.evaluate(t + h, s, a1_);
+    evaluated(forces, t + h, s, a1_);
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
-      accelerate(s, j, rotates[k], 0.5 * (a1_.linear[j] - a0_.linear[j]),
-                 0.5 * (a1_.angular[j] - a0_.angular[j]), h);
+      accelerate(s, j, rotates[k], 0.5 * (a1_.linear[j] - a0.linear[j]),
+                 0.5 * (a1_.angular[j] - a0.angular[j]), h);
     }
   }
   double impulse_position_share() const override { return 0.5; }
@@ -98,7 +100,9 @@ class VelocityVerlet final : public Integrator {
 /// Classic fourth-order Runge–Kutta on (x, ϕ, v, ω).
 class RungeKutta4 final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
+  // Evaluates its first stage itself: the stages keep their accelerations together.
+  void advance(const ForceModel& forces, double t, double h, MotionState& s,
+               const Accelerations*) override {
     const std::size_t n = s.position.size();
     stage_state_ = s;
     const auto& ids = forces.bodies();
