@@ -118,16 +118,11 @@ void Space::move_kinematic(double h) {
 
 const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
   shapes_.place(start_.position, start_.angle, world_start_);
-  // Boxes swept along the ballistic path catch a fast body wherever it is during the step.
-  const auto end_pose = [&](BodyId j) {
-    if (dynamic_[j]) return std::pair(motion.position(j, h), motion.angle(j, h));
-    if (types_[j] == BodyType::Kinematic) {
-      return std::pair<Vec2, double>(start_.position[j] + h * start_.velocity[j],
-                                     start_.angle[j] + h * start_.angular_velocity[j]);
-    }
-    return std::pair(start_.position[j], start_.angle[j]);
-  };
-  shapes_.place(end_pose, world_end_);
+  // Boxes swept along the ballistic path catch a fast body wherever it is during the step. The
+  // path covers every body: kinematic and static ones have no acceleration, so it ends where
+  // move_kinematic moves them, and static ones where they are.
+  shapes_.place([&](BodyId j) { return std::pair(motion.position(j, h), motion.angle(j, h)); },
+                world_end_);
   return detection_.candidate_pairs(shapes_, dynamic_, world_start_, world_end_);
 }
 
