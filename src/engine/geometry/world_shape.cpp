@@ -7,7 +7,7 @@ namespace gp {
 namespace {
 
 WorldShape place(const Circle& circle, const Transform& transform) {
-  const Circle placed{transform.apply(circle.center), circle.radius};
+  const Circle placed = moved(circle, transform);
   return {placed, bounds_of(placed)};
 }
 
@@ -21,7 +21,7 @@ WorldShape place(const PolygonView& polygon, const Transform& transform) {
 }
 
 WorldShape place(const Segment& segment, const Transform& transform) {
-  const Segment placed{transform.apply(segment.a), transform.apply(segment.b), segment.radius};
+  const Segment placed = moved(segment, transform);
   return {placed, bounds_of(placed)};
 }
 

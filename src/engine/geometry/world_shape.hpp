@@ -46,6 +46,15 @@ inline Aabb bounds_of(const Segment& segment) {
           (segment.a.cwiseMax(segment.b).array() + segment.radius).matrix()};
 }
 
+/// A disc and a segment (body frame) moved into the world by their body's `transform`: what both
+/// a WorldShape and a packed placement (WorldShapes) hold of them.
+inline Circle moved(const Circle& circle, const Transform& transform) {
+  return {transform.apply(circle.center), circle.radius};
+}
+inline Segment moved(const Segment& segment, const Transform& transform) {
+  return {transform.apply(segment.a), transform.apply(segment.b), segment.radius};
+}
+
 /// The shape `local` (body frame) moved into the world by its body's `transform`.
 WorldShape to_world(const GeometryView& local, const Transform& transform);
 

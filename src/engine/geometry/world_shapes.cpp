@@ -16,12 +16,11 @@ void WorldShapes::place(std::size_t i, const GeometryView& local, const Transfor
   // A disc or a segment straight into its packed form: through to_world, it would be built as a
   // WorldShape, with room for a polygon, first.
   if (const auto* circle = std::get_if<Circle>(&local)) {
-    shapes_[i] = PackedGeometry(Circle{transform.apply(circle->center), circle->radius});
+    shapes_[i] = PackedGeometry(moved(*circle, transform));
     return;
   }
   if (const auto* segment = std::get_if<Segment>(&local)) {
-    shapes_[i] = PackedGeometry(
-        Segment{transform.apply(segment->a), transform.apply(segment->b), segment->radius});
+    shapes_[i] = PackedGeometry(moved(*segment, transform));
     return;
   }
   const auto& polygon = std::get<PolygonView>(local);
