@@ -33,12 +33,12 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
     }
     const bool typical = run.run_type != benchmark::BenchmarkReporter::Run::RT_Aggregate ||
                          run.aggregate_name == "median";
-    if (const auto moved = run.counters.find(kMovedCounter);
-        typical && moved != run.counters.end()) {
-      m.moved_m = moved->second;
-    }
-    if (const auto heap = run.counters.find(kHeapCounter); typical && heap != run.counters.end()) {
-      m.heap_bytes = heap->second;
+    if (!typical) continue;
+    for (const auto& [name, value] :
+         {std::pair{kMovedCounter, &m.moved_m}, std::pair{kHeapCounter, &m.heap_bytes}}) {
+      if (const auto counter = run.counters.find(name); counter != run.counters.end()) {
+        *value = counter->second;
+      }
     }
   }
   std::vector<Figures> all;
