@@ -53,6 +53,18 @@ BroadphaseProxy box_proxy(std::uint32_t id, const Vec2& center, const Vec2& size
   return {Aabb{center - 0.5 * size, center + 0.5 * size}, id, is_static};
 }
 
+// `count` unit boxes of dynamic bodies at random in a square `width` m wide, the same for a given
+// `seed`.
+std::vector<BroadphaseProxy> random_unit_boxes(std::uint32_t count, double width, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> position(0.0, width);
+  std::vector<BroadphaseProxy> proxies;
+  for (std::uint32_t id = 0; id < count; ++id) {
+    proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
+  }
+  return proxies;
+}
+
 }  // namespace
 
 TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 random boxes",
@@ -155,12 +167,7 @@ TEST_CASE("Sweep and prune sorts afresh when the boxes were shuffled since the l
           "[FR:Determine-Collisions]") {
   // Mirrored left to right, the boxes keep their bands but reverse their order in each: repairing
   // that order by insertion would take O(N²) moves.
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> position(0.0, 30.0);
-  std::vector<BroadphaseProxy> proxies;
-  for (std::uint32_t id = 0; id < 2000; ++id) {
-    proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
-  }
+  std::vector<BroadphaseProxy> proxies = random_unit_boxes(2000, 30.0, 5);
   gp::SweepAndPrune broadphase(0.0);
   pairs_found(broadphase, proxies);
   CHECK(broadphase.entries_resorted() >= proxies.size());  // the first call has nothing to repair
@@ -191,12 +198,7 @@ TEST_CASE("Sweep and prune compares a few candidates per box in a scene spread b
           "[FR:Determine-Collisions]") {
   // 40 000 unit boxes at random in a square 400 m wide: a sweep along x alone would compare each
   // with the √N / 2 = 100 boxes sharing its x interval.
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> position(0.0, 400.0);
-  std::vector<BroadphaseProxy> proxies;
-  for (std::uint32_t id = 0; id < 40000; ++id) {
-    proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
-  }
+  const std::vector<BroadphaseProxy> proxies = random_unit_boxes(40000, 400.0, 3);
   gp::SweepAndPrune broadphase(0.05);
   const std::size_t pairs = pairs_found(broadphase, proxies).size();
   CHECK(pairs > 0);
