@@ -191,7 +191,7 @@ double Space::substep(double h) {
 
 void Space::advance(double h) {
   // Impacts among touching bodies happen at the start of the step, before its forces.
-  if (!contacts_.empty() && propagate_impacts(contacts_, inertia_, settings_, state_)) {
+  if (!contacts_.empty() && propagate_impacts(contacts_, shapes_, inertia_, settings_, state_)) {
     start_.velocity = state_.velocity;
     start_.angular_velocity = state_.angular_velocity;
   }
@@ -200,7 +200,7 @@ void Space::advance(double h) {
   integrator_->advance(forces_, time_, h, state_, known ? &start_acceleration_ : nullptr);
   move_kinematic(h);
   if (!contacts_.empty()) {
-    prepare_contacts(contacts_, inertia_, start_, h, settings_);
+    prepare_contacts(contacts_, shapes_, inertia_, start_, h, settings_);
     warm_start(contacts_, inertia_, state_);
     solve_small_islands(contacts_, inertia_, settings_.direct_solve_points, state_,
                         island_scratch_);
@@ -211,15 +211,15 @@ void Space::advance(double h) {
                              state_);
   }
   if (!speculative_contacts_.empty()) {
-    solve_speculative(contacts_, speculative_contacts_, inertia_, start_, h, settings_, state_,
-                      speculative_scratch_);
-    correct_positions(speculative_contacts_, inertia_, settings_.position_iterations,
-                      settings_.linear_slop, state_, rotations_);
+    solve_speculative(contacts_, speculative_contacts_, shapes_, inertia_, start_, h, settings_,
+                      state_, speculative_scratch_);
+    correct_positions(speculative_contacts_, shapes_, inertia_, start_.angle,
+                      settings_.position_iterations, settings_.linear_slop, state_, rotations_);
     speculative_contacts_.clear();
   }
   if (!contacts_.empty()) {
-    correct_positions(contacts_, inertia_, settings_.position_iterations, settings_.linear_slop,
-                      state_, rotations_);
+    correct_positions(contacts_, shapes_, inertia_, start_.angle, settings_.position_iterations,
+                      settings_.linear_slop, state_, rotations_);
   }
   time_ += h;
   keep_impulses(contacts_, warm_starts_);

@@ -16,9 +16,12 @@ constexpr double kStep = 1.0 / 60.0;
 struct RestingBox {
   gp::BodyInertia inertia{{0.0, 1.0}, {0.0, 6.0}};  // a unit box: I = m (w² + h²) / 12 = 1/6
   gp::MotionState state;
+  gp::BodyShapes shapes;
   gp::ContactSet contacts;
 
   RestingBox() {
+    shapes.add(0, gp::Shape::segment({-5.0, 0.0}, {5.0, 0.0}), 0.0, 0.6, false);
+    shapes.add(1, gp::Shape::box(1.0, 1.0), 0.0, 0.6, true);
     state.resize(2);
     state.position[1] = {0.0, 0.5};
     state.velocity[1] = {0.0, -kGravity * kStep};
@@ -35,7 +38,7 @@ struct RestingBox {
     }
     gp::MotionState before = state;
     before.velocity[1] = gp::Vec2::Zero();
-    gp::prepare_contacts(contacts, inertia, before, kStep, gp::Settings{});
+    gp::prepare_contacts(contacts, shapes, inertia, before, kStep, gp::Settings{});
   }
 };
 

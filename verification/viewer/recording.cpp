@@ -1,6 +1,5 @@
 #include "verification/viewer/recording.hpp"
 
-#include "engine/geometry/transform.hpp"
 #include "engine/scene/run.hpp"
 
 namespace gp::verification {
@@ -14,13 +13,13 @@ Frame frame_of(const Space& space, double t) {
     f.quantities.push_back(body_quantities(space, body));
   }
   for (const Contact& c : space.contacts()) {
-    const BodyState a = space.state(c.body_a);
-    const Transform placement(a.position, a.angle);
+    const Vec2 position_a = space.state(c.body_a).position;
     for (const ContactPointState& p : space.contacts().points(c)) {
       // Speculative points that never closed carry no impulse and are not contacts to show.
       if (p.normal_impulse <= 0.0) continue;
+      // The point as it was found, carried along with A since.
       f.contacts.push_back(
-          {c.body_a, c.body_b, placement.apply(p.local_anchor_a), c.normal, p.normal_impulse});
+          {c.body_a, c.body_b, position_a + arm_a(c, p), c.normal, p.normal_impulse});
     }
   }
   return f;

@@ -2,27 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <utility>
 
 #include "engine/collision/narrowphase.hpp"
-#include "engine/geometry/transform.hpp"
 
 namespace gp {
-
-namespace {
-
-// Where shape `shape` of a body at `frame` reaches deepest into the other shape, as an anchor in
-// the body's frame plus a radius along the normal away from the shape (see ContactPointState).
-std::pair<Vec2, double> anchor(const GeometryView& shape, const Transform& frame,
-                               const Vec2& deepest) {
-  if (const auto* circle = std::get_if<Circle>(&shape)) {
-    return {circle->center, circle->radius};
-  }
-  return {frame.unrotate(deepest - frame.position()), 0.0};
-}
-
-}  // namespace
 
 const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShapes& shapes,
                                                                   const std::vector<char>& dynamic,
@@ -59,15 +43,7 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
   c.body_a = a.body;
   c.body_b = b.body;
   c.normal = m.normal;
-  c.restitution = std::max(a.restitution, b.restitution);
   c.friction = std::sqrt(a.friction * b.friction);
-  // A disc's anchor needs no frame: spare its trigonometry.
-  const auto frame_of = [&s](const ShapeRecord& r) {
-    return kind_of(r.local) == ShapeKind::kCircle ? Transform()
-                                                  : Transform(s.position[r.body], s.angle[r.body]);
-  };
-  const Transform frame_a = frame_of(a);
-  const Transform frame_b = frame_of(b);
   const std::span<ContactPointState> points = contacts.points(c);
   for (int k = 0; k < m.count; ++k) {
     const ContactPoint& point = m.points[k];
@@ -75,12 +51,6 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
     q.id = point.id;
     q.depth = point.depth;
     set_arms(q, m.normal, point.position - s.position[a.body], point.position - s.position[b.body]);
-    // The deepest points of each shape inside the other, fixed in their bodies, measure the
-    // penetration again after the bodies move (position correction).
-    std::tie(q.local_anchor_a, q.anchor_radius_a) =
-        anchor(a.local, frame_a, point.position - 0.5 * point.depth * m.normal);
-    std::tie(q.local_anchor_b, q.anchor_radius_b) =
-        anchor(b.local, frame_b, point.position + 0.5 * point.depth * m.normal);
   }
   return c;
 }

@@ -14,8 +14,7 @@
 namespace gp {
 
 /// Appends to `contacts` the contact constraint of the shapes of `pair`, whose manifold `m` was
-/// found in state `s`: combined surface properties, and per point its depth, arms and the anchors
-/// that measure the overlap again after the bodies move. Impulses start at 0.
+/// found in state `s`: combined friction, and per point its depth and arms. Impulses start at 0.
 Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
                         const MotionState& s, ContactSet& contacts);
 

@@ -23,7 +23,8 @@ inline Vec2 contact_tangent(const Vec2& normal) {
 
 /// One point of a contact constraint. The fields a solver pass reads come first, so that they
 /// share two cache lines. The arms themselves are not kept: set_arms keeps their cross products
-/// with the normal and the tangent, from which arm_a and arm_b rebuild them.
+/// with the normal and the tangent, from which arm_a and arm_b rebuild them; nor are the points
+/// fixed in each body that the position passes follow, which they rebuild from the arms.
 struct ContactPointState {
   double normal_impulse = 0.0;          ///< N·s, accumulated over the step (≥ 0)
   double tangent_impulse = 0.0;         ///< N·s, accumulated over the step (|·| ≤ μ · normal)
@@ -37,16 +38,10 @@ struct ContactPointState {
   double normal_arm_a = 0.0, normal_arm_b = 0.0;
   double tangent_arm_a = 0.0, tangent_arm_b = 0.0;
   double depth = 0.0;  ///< m, overlap at detection (negative: still apart)
-  /// m, in A's frame: A's deepest point is this point plus anchor_radius_a along −normal (a
-  /// circle's centre and radius, so that a disc's turning does not move its deepest point).
-  Vec2 local_anchor_a = Vec2::Zero();
-  /// m, in B's frame: B's deepest point is this point plus anchor_radius_b along +normal.
-  Vec2 local_anchor_b = Vec2::Zero();
-  double anchor_radius_a = 0.0;  ///< m
-  double anchor_radius_b = 0.0;  ///< m
-  /// m/s: v_rel·n before the step when the point was touching and approaching faster than the
-  /// restitution threshold (it then bounces with C_R), else 0.
-  double approach_velocity = 0.0;
+  /// m/s: C_R times v_rel·n before the step when the point was touching and approaching faster
+  /// than the restitution threshold (it then bounces, apply_restitution driving v_rel·n up to
+  /// minus this), else 0.
+  double bounce_velocity = 0.0;
   FeatureId id;
 };
 
@@ -79,21 +74,23 @@ struct NormalBlock {
 };
 
 /// A contact constraint between two shapes; its points and, for two points, its block are kept
-/// by the ContactSet it belongs to.
+/// by the ContactSet it belongs to. Its restitution is not kept: contact_restitution gives it.
 struct Contact {
+  /// The `block` of a contact of one point, which has none.
+  static constexpr std::uint32_t kNoBlock = ~std::uint32_t{0};
+
   std::uint32_t shape_a;
   std::uint32_t shape_b;
   BodyId body_a;
   BodyId body_b;
   Vec2 normal;                ///< unit, world, from B towards A
-  double restitution;         ///< C_R = max of the two shapes'
   double friction;            ///< μ = √(μ_a μ_b)
   std::uint32_t first_point;  ///< where the points start in the ContactSet
-  int count;                  ///< of points: 1 or 2
-  /// Of a two-point contact, where its NormalBlock is in the ContactSet, set up once per step so
-  /// that the solver's passes divide nothing.
+  /// Of a two-point contact, where its NormalBlock is in the ContactSet; kNoBlock for one point.
   std::uint32_t block;
 
+  /// Of points: 1 or 2.
+  int count() const { return block == kNoBlock ? 1 : 2; }
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
   std::uint64_t key() const { return key_of({shape_a, shape_b}); }
 };

@@ -16,15 +16,14 @@ Contact& ContactSet::append(int count) {
   reserve_for(points_, points_.size() + static_cast<std::size_t>(count));
   Contact& c = contacts_.emplace_back();
   c.first_point = static_cast<std::uint32_t>(points_.size());
-  c.count = count;
+  c.block = Contact::kNoBlock;
+  if (count == 2) {
+    reserve_for(blocks_, blocks_.size() + 1);
+    c.block = static_cast<std::uint32_t>(blocks_.size());
+    blocks_.emplace_back();
+  }
   for (int k = 0; k < count; ++k) points_.emplace_back();
   return c;
-}
-
-void ContactSet::set_block(Contact& c, const NormalBlock& block) {
-  reserve_for(blocks_, blocks_.size() + 1);
-  c.block = static_cast<std::uint32_t>(blocks_.size());
-  blocks_.push_back(block);
 }
 
 }  // namespace gp

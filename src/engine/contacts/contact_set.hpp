@@ -30,36 +30,40 @@ class ContactSet {
   auto end() const { return contacts_.end(); }
 
   std::span<ContactPointState> points(const Contact& c) {
-    return {points_.data() + c.first_point, static_cast<std::size_t>(c.count)};
+    return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
   }
   std::span<const ContactPointState> points(const Contact& c) const {
-    return {points_.data() + c.first_point, static_cast<std::size_t>(c.count)};
+    return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
   }
 
-  /// Appends a contact of `count` points, its points value-initialised; the caller fills in the
-  /// rest.
+  /// Appends a contact of `count` points (1 or 2), its points and block value-initialised; the
+  /// caller fills in the rest.
   Contact& append(int count);
 
   /// The block of a two-point contact, as set_block left it.
   const NormalBlock& block(const Contact& c) const { return blocks_[c.block]; }
-  /// Forgets every block (before they are set up anew for a step).
-  void clear_blocks() { blocks_.clear(); }
-  void set_block(Contact& c, const NormalBlock& block);
+  void set_block(const Contact& c, const NormalBlock& block) { blocks_[c.block] = block; }
 
   /// Removes the contacts for which `drop(contact)` is true, keeping the others' order.
   template <typename Predicate>
   void erase_if(Predicate drop) {
     std::size_t kept = 0;
     std::size_t kept_points = 0;
+    std::size_t kept_blocks = 0;
     for (const Contact& c : contacts_) {
       if (drop(c)) continue;
       Contact moved = c;
       moved.first_point = static_cast<std::uint32_t>(kept_points);
-      for (int k = 0; k < c.count; ++k) points_[kept_points++] = points_[c.first_point + k];
+      for (int k = 0; k < c.count(); ++k) points_[kept_points++] = points_[c.first_point + k];
+      if (c.block != Contact::kNoBlock) {
+        moved.block = static_cast<std::uint32_t>(kept_blocks);
+        blocks_[kept_blocks++] = blocks_[c.block];
+      }
       contacts_[kept++] = moved;
     }
     contacts_.resize(kept);
     points_.resize(kept_points);
+    blocks_.resize(kept_blocks);
   }
 
  private:

@@ -230,18 +230,23 @@ double apply_collision_response(const Contact& c, const ContactPointState& p, do
   return r.impulse;
 }
 
-bool propagate_impacts(const ContactSet& contacts, const BodyInertia& inertia,
-                       const Settings& settings, MotionState& s) {
+double contact_restitution(const BodyShapes& shapes, const Contact& c) {
+  return std::max(shapes[c.shape_a].restitution, shapes[c.shape_b].restitution);
+}
+
+bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
+                       const BodyInertia& inertia, const Settings& settings, MotionState& s) {
   bool any = false;
   int passes = settings.velocity_iterations;
   for (bool struck = true; struck && passes-- > 0;) {
     struck = false;
     for (const Contact& c : contacts) {
-      if (c.restitution == 0.0) continue;
+      const double restitution = contact_restitution(shapes, c);
+      if (restitution == 0.0) continue;
       for (const ContactPointState& p : contacts.points(c)) {
         if (p.depth <= -settings.linear_slop) continue;
         if (contact_normal_velocity(s, c, p) >= -settings.restitution_threshold) continue;
-        apply_collision_response(c, p, c.restitution, inertia, s);
+        apply_collision_response(c, p, restitution, inertia, s);
         struck = any = true;
       }
     }
@@ -270,10 +275,10 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const Con
 
 }  // namespace
 
-void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia, const MotionState& before,
-                      double h, const Settings& settings) {
-  contacts.clear_blocks();
-  for (Contact& c : contacts) {
+void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
+                      const MotionState& before, double h, const Settings& settings) {
+  for (const Contact& c : contacts) {
+    const double restitution = contact_restitution(shapes, c);
     const Vec2 tangent = contact_tangent(c.normal);
     const std::span<ContactPointState> points = contacts.points(c);
     for (ContactPointState& p : points) {
@@ -285,9 +290,9 @@ void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia, const Mo
       p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
       // A speculative point (still apart) bounces too if the solver ends up pushing on it:
       // apply_restitution acts only where the normal impulse is positive.
-      p.approach_velocity = approach < -settings.restitution_threshold ? approach : 0.0;
+      p.bounce_velocity = approach < -settings.restitution_threshold ? restitution * approach : 0.0;
     }
-    if (c.count == 2) contacts.set_block(c, normal_block(inertia, c, points[0], points[1]));
+    if (c.count() == 2) contacts.set_block(c, normal_block(inertia, c, points[0], points[1]));
   }
 }
 
@@ -310,8 +315,8 @@ double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& ine
                   MotionState& s) {
   PairMotion m(c, inertia, s);
   const std::span<ContactPointState> points = contacts.points(c);
-  const double impulse_change = c.count == 1 ? solve_contact(contacts, c, points.first<1>(), m)
-                                             : solve_contact(contacts, c, points.first<2>(), m);
+  const double impulse_change = c.count() == 1 ? solve_contact(contacts, c, points.first<1>(), m)
+                                               : solve_contact(contacts, c, points.first<2>(), m);
   m.store(c, s);
   return impulse_change * (m.inverse_mass_a + m.inverse_mass_b);
 }
@@ -347,12 +352,15 @@ int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int itera
 
 void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
   for (const Contact& c : contacts) {
-    if (c.restitution == 0.0) continue;
+    const std::span<ContactPointState> points = contacts.points(c);
+    if (std::all_of(points.begin(), points.end(),
+                    [](const ContactPointState& p) { return p.bounce_velocity == 0.0; })) {
+      continue;
+    }
     PairMotion m(c, inertia, s);
-    for (ContactPointState& p : contacts.points(c)) {
-      if (p.approach_velocity == 0.0 || p.normal_impulse == 0.0) continue;
-      const double change =
-          -p.normal_mass * (m.normal_velocity(c, p) + c.restitution * p.approach_velocity);
+    for (ContactPointState& p : points) {
+      if (p.bounce_velocity == 0.0 || p.normal_impulse == 0.0) continue;
+      const double change = -p.normal_mass * (m.normal_velocity(c, p) + p.bounce_velocity);
       const double total = std::max(p.normal_impulse + change, 0.0);
       m.push_normal(c, p, total - p.normal_impulse);
       p.normal_impulse = total;
@@ -366,9 +374,9 @@ void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& ine
   for (const Contact& c : contacts) move_by_impulses(contacts, c, inertia, duration, s);
 }
 
-void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyInertia& inertia,
-                       const MotionState& before, double h, const Settings& settings,
-                       MotionState& s, SpeculativeScratch& scratch) {
+void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyShapes& shapes,
+                       const BodyInertia& inertia, const MotionState& before, double h,
+                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch) {
   // An impact's impulse fades as it spreads through a heap: the resting contacts up to this many
   // contacts away from it are solved with it, the rest of the heap holds still for it.
   constexpr int kReach = 2;
@@ -396,7 +404,7 @@ void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyI
   // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
   // impulses so far, and give h × their final impulses at the end.
   for (std::size_t i : scratch.nearby) move_by_impulses(resting, resting[i], inertia, -h, s);
-  prepare_contacts(speculative, inertia, before, h, settings);
+  prepare_contacts(speculative, shapes, inertia, before, h, settings);
   for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
     for (std::size_t i : scratch.nearby) solve_once(resting, resting[i], inertia, s);
     for (const Contact& c : speculative) solve_once(speculative, c, inertia, s);
@@ -411,21 +419,59 @@ void RotationCache::reset(std::size_t bodies) {
   rotation_.resize(bodies);
 }
 
-void correct_positions(const ContactSet& contacts, const BodyInertia& inertia, int iterations,
-                       double slop, MotionState& s, RotationCache& rotations) {
+namespace {
+
+// How a body's deepest point inside the other body moves with it in the position passes: the
+// arm `turning` [m], from the body's centre of mass, turns with the body, and the point lies
+// `radius` [m] beyond its end, along the normal away from the body. A disc's deepest point does not
+// turn with the disc, only its centre does.
+struct Anchor {
+  Vec2 turning;
+  double radius;
+};
+
+// The anchor of `shape` whose deepest point, at detection, was at `arm()` from its body's centre of
+// mass; `outward` is the unit normal away from the body. The arm is rebuilt only if needed: a disc
+// on its body's centre of mass, the common case, needs none.
+template <typename Arm>
+Anchor anchor(const ShapeRecord& shape, const Arm& arm, const Vec2& outward) {
+  const auto* disc = std::get_if<Circle>(&shape.local);
+  if (disc == nullptr) return {arm(), 0.0};
+  // Zero exactly rather than by round-off, which would cost the rotation trigonometry.
+  if (disc->center.x() == 0.0 && disc->center.y() == 0.0) return {Vec2::Zero(), disc->radius};
+  return {arm() - disc->radius * outward, disc->radius};
+}
+
+}  // namespace
+
+void correct_positions(const ContactSet& contacts, const BodyShapes& shapes,
+                       const BodyInertia& inertia, std::span<const double> detected_angle,
+                       int iterations, double slop, MotionState& s, RotationCache& rotations) {
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());
+  const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
+  // The turning arm of body b's anchor, turned with b since detection; a disc's centre on its
+  // body's centre of mass needs no trigonometry.
+  const auto turned = [&](BodyId b, const Vec2& arm) -> Vec2 {
+    if (arm.x() == 0.0 && arm.y() == 0.0) return arm;
+    return rotations.rotate(b, turn(b), arm);
+  };
   // Passes end after one that found no point overlapping by more than two slops: what is left
   // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
   for (bool deep = true; deep && iterations-- > 0;) {
     deep = false;
     for (const Contact& c : contacts) {
       for (const ContactPointState& p : contacts.points(c)) {
-        const Vec2 arm_a = rotations.rotate(c.body_a, s.angle[c.body_a], p.local_anchor_a) -
-                           p.anchor_radius_a * c.normal;
-        const Vec2 arm_b = rotations.rotate(c.body_b, s.angle[c.body_b], p.local_anchor_b) +
-                           p.anchor_radius_b * c.normal;
+        // Each body's deepest point inside the other at detection, half the depth from the
+        // contact point.
+        const Vec2 half_depth = 0.5 * p.depth * c.normal;
+        const Anchor on_a = anchor(
+            shapes[c.shape_a], [&]() -> Vec2 { return arm_a(c, p) - half_depth; }, -c.normal);
+        const Anchor on_b = anchor(
+            shapes[c.shape_b], [&]() -> Vec2 { return arm_b(c, p) + half_depth; }, c.normal);
+        const Vec2 arm_a = turned(c.body_a, on_a.turning) - on_a.radius * c.normal;
+        const Vec2 arm_b = turned(c.body_b, on_b.turning) + on_b.radius * c.normal;
         const double separation =
             (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
@@ -436,8 +482,8 @@ void correct_positions(const ContactSet& contacts, const BodyInertia& inertia, i
         const Vec2 shift = -excess * p.normal_mass * c.normal;
         const Turns turns = displace(inertia, c, shift, dd::torque(arm_a, shift),
                                      dd::torque(arm_b, tm::reaction_force(shift)), s);
-        rotations.turn(c.body_a, s.angle[c.body_a], turns.a);
-        rotations.turn(c.body_b, s.angle[c.body_b], turns.b);
+        rotations.turn(c.body_a, turn(c.body_a), turns.a);
+        rotations.turn(c.body_b, turn(c.body_b), turns.b);
       }
     }
   }

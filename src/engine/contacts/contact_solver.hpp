@@ -6,8 +6,10 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
+#include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/contact_set.hpp"
 #include "engine/dynamics/motion_state.hpp"
 #include "engine/geometry/transform.hpp"
@@ -42,21 +44,26 @@ void apply_contact_impulse(const Contact& c, const ContactPointState& p, double 
 double apply_collision_response(const Contact& c, const ContactPointState& p, double restitution,
                                 const BodyInertia& inertia, MotionState& s);
 
+/// The coefficient of restitution C_R of contact `c`: the larger of its two shapes' (the
+/// combination rule of FR:Input-Surface-Properties, as Box2D's).
+double contact_restitution(const BodyShapes& shapes, const Contact& c);
+
 /// Impacts among bodies already touching, a Newton's cradle at rest struck at one end: resolved
 /// pair after pair by apply_collision_response with each contact's C_R, pass after pass, until
 /// no touching point with C_R > 0 approaches faster than the restitution threshold (at most as
 /// many passes as the solver's velocity iterations). This is the sequential model of simultaneous
 /// impacts, under which the cradle passes the momentum along the row to its last ball, where a
 /// simultaneous solve spreads it over the row. Returns whether any impulse was applied.
-bool propagate_impacts(const ContactSet& contacts, const BodyInertia& inertia,
-                       const Settings& settings, MotionState& s);
+bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
+                       const BodyInertia& inertia, const Settings& settings, MotionState& s);
 
 /// Prepares each point for a step of h [s]: its effective masses; its target normal velocity, the
-/// speed that just closes the gap for points still apart, else 0; and, for touching points
-/// approaching faster than the restitution threshold, that approach velocity v_n (measured in
-/// `before`, the state before the step's forces) for apply_restitution.
-void prepare_contacts(ContactSet& contacts, const BodyInertia& inertia, const MotionState& before,
-                      double h, const Settings& settings);
+/// speed that just closes the gap for points still apart, else 0; for touching points approaching
+/// faster than the restitution threshold, the bounce C_R v_n from that approach velocity v_n
+/// (measured in `before`, the state before the step's forces) for apply_restitution; and the
+/// normal block of each two-point contact.
+void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
+                      const MotionState& before, double h, const Settings& settings);
 
 /// Applies the carried-over impulses of every point to the velocities of `s`.
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
@@ -96,13 +103,14 @@ struct SpeculativeScratch {
 /// impact on, so they move the bodies by h × Δv, which closes each gap exactly, rather than by
 /// the resting share, which would leave a fast body overlapping and press the body under it
 /// into the ground.
-void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyInertia& inertia,
-                       const MotionState& before, double h, const Settings& settings,
-                       MotionState& s, SpeculativeScratch& scratch);
+void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyShapes& shapes,
+                       const BodyInertia& inertia, const MotionState& before, double h,
+                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch);
 
-/// The rotations of bodies by their current angles, each computed only when first asked for, and
-/// after a small turn updated without trigonometry: most contact points of discs need none, and
-/// position passes turn bodies by tiny angles.
+/// The rotations of bodies by an angle each (in the position passes, the angle each has turned
+/// since its contacts were found), each computed only when first asked for, and after a small
+/// turn updated without trigonometry: most contact points of discs need none, and position passes
+/// turn bodies by tiny angles.
 class RotationCache {
  public:
   /// Forgets every rotation; sized for `bodies` bodies.
@@ -120,9 +128,8 @@ class RotationCache {
     rotation_[body] = rotation_[body].turned_slightly(turn);
     angle_[body] = angle;
   }
-  /// `v` (body axes) turned by `angle` [rad], the current angle of `body`, into world axes.
+  /// `v` turned by `angle` [rad], the current angle of `body`.
   Vec2 rotate(BodyId body, double angle, const Vec2& v) {
-    if (v.x() == 0.0 && v.y() == 0.0) return v;  // a disc's centre: no trigonometry
     if (angle_[body] != angle) {
       angle_[body] = angle;
       rotation_[body] = Rotation(angle);
@@ -137,9 +144,13 @@ class RotationCache {
 
 /// At most `iterations` passes that move and turn bodies apart (positions only) where the
 /// contact points overlap by more than `slop` [m], removing a fifth of the excess per pass
-/// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops.
-/// `rotations` is scratch, kept by the caller so that a step does not allocate.
-void correct_positions(const ContactSet& contacts, const BodyInertia& inertia, int iterations,
-                       double slop, MotionState& s, RotationCache& rotations);
+/// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops. The
+/// overlap is measured between each body's deepest point inside the other at detection, carried
+/// along as the body moved and turned from `detected_angle` [rad, by body id], its angle when the
+/// contacts were found. `rotations` is scratch, kept by the caller so that a step does not
+/// allocate.
+void correct_positions(const ContactSet& contacts, const BodyShapes& shapes,
+                       const BodyInertia& inertia, std::span<const double> detected_angle,
+                       int iterations, double slop, MotionState& s, RotationCache& rotations);
 
 }  // namespace gp

@@ -140,18 +140,18 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
   const auto approach = [&s](const Contact& c, const ContactPointState& p) {
     return contact_normal_velocity(s, c, p);
   };
-  if (contacts.size() == 1 && contacts[0].count == 1 && contacts[0].friction == 0.0) {
+  if (contacts.size() == 1 && contacts[0].count() == 1 && contacts[0].friction == 0.0) {
     // One frictionless point: IM:col2D exactly.
     const Contact& c = contacts[0];
     const ContactPointState& p = contacts.points(c)[0];
     const double restitution =
-        approach(c, p) < -settings.restitution_threshold ? c.restitution : 0.0;
+        approach(c, p) < -settings.restitution_threshold ? contact_restitution(shapes, c) : 0.0;
     const double impulse = apply_collision_response(c, p, restitution, inertia, s);
     log.push_back({t, c.body_a, c.body_b, c.normal, arm_a(c, p) + s.position[c.body_a], impulse});
     return;
   }
   // An impact takes no time: no gap to close, only the restitution targets.
-  prepare_contacts(contacts, inertia, s, std::numeric_limits<double>::infinity(), settings);
+  prepare_contacts(contacts, shapes, inertia, s, std::numeric_limits<double>::infinity(), settings);
   // Enough passes for Gauss–Seidel to converge on a handful of simultaneous points.
   solve_velocities(contacts, inertia, 64, 0.0, s);
   apply_restitution(contacts, inertia, s);
@@ -159,7 +159,7 @@ void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
     Vec2 point = Vec2::Zero();
     double impulse = 0.0;
     for (const ContactPointState& p : contacts.points(c)) {
-      point += (arm_a(c, p) + s.position[c.body_a]) / c.count;
+      point += (arm_a(c, p) + s.position[c.body_a]) / c.count();
       impulse += p.normal_impulse;
     }
     log.push_back({t, c.body_a, c.body_b, c.normal, point, impulse});

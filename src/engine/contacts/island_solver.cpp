@@ -44,7 +44,7 @@ void find_islands(const ContactSet& contacts, const BodyInertia& inertia, Island
   std::vector<std::uint32_t>& counts = scratch.cursor;
   for (const Contact& c : contacts) {
     const BodyId r = root(c);
-    scratch.points[r] += static_cast<std::uint32_t>(c.count);
+    scratch.points[r] += static_cast<std::uint32_t>(c.count());
     ++counts[r];
   }
   std::uint32_t next = 0;
@@ -155,7 +155,7 @@ int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::s
     if (scratch.points[r] == 0 || scratch.points[r] > max_points) continue;
     scratch.rows.clear();
     for (std::uint32_t e = scratch.island_start[r]; e < scratch.cursor[r]; ++e) {
-      for (int k = 0; k < contacts[scratch.order[e]].count; ++k) {
+      for (int k = 0; k < contacts[scratch.order[e]].count(); ++k) {
         scratch.rows.push_back({scratch.order[e], static_cast<std::uint32_t>(k)});
       }
     }
