@@ -99,7 +99,7 @@ TEST_CASE("A point's arms come back from their cross products with the normal an
   }
 }
 
-TEST_CASE("Dropping contacts from a set keeps each remaining contact with its own points",
+TEST_CASE("Dropping contacts from a set keeps each remaining contact with its own points and block",
           "[FR:Determine-Collisions]") {
   gp::ContactSet set;
   for (std::uint32_t i = 0; i < 5; ++i) {
@@ -107,6 +107,7 @@ TEST_CASE("Dropping contacts from a set keeps each remaining contact with its ow
     gp::Contact& c = set.append(count);
     c.shape_a = i;
     for (int k = 0; k < count; ++k) set.points(c)[k].depth = 10.0 * i + k;
+    if (count == 2) set.set_block(c, gp::NormalBlock{.k11 = static_cast<double>(i)});
   }
   CHECK(set.point_count() == 8);
   set.erase_if([](const gp::Contact& c) { return c.shape_a == 0 || c.shape_a == 3; });
@@ -117,5 +118,59 @@ TEST_CASE("Dropping contacts from a set keeps each remaining contact with its ow
     for (std::size_t k = 0; k < set.points(c).size(); ++k) {
       CHECK(set.points(c)[k].depth == 10.0 * c.shape_a + static_cast<double>(k));
     }
+    if (c.count() == 2) CHECK(set.block(c).k11 == static_cast<double>(c.shape_a));
   }
+}
+
+namespace {
+
+// A body (1) of 1 kg and 1 kg·m² touching static ground (0) along the normal +y at one point
+// overlapping by `depth`, its shape's deepest point found at `arm` from its centre of mass; the
+// body then turned by `turn` about its centre of mass before the position pass. Returns how far
+// one position pass lifts it [m].
+double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth, double turn) {
+  gp::BodyShapes shapes;
+  shapes.add(0, gp::Shape::segment({-5.0, 0.0}, {5.0, 0.0}), 0.0, 0.0, false);
+  shapes.add(1, shape, 0.0, 0.0, true);
+  const gp::BodyInertia inertia{{0.0, 1.0}, {0.0, 1.0}};
+  gp::MotionState s;
+  s.resize(2);
+  s.position[1] = {0.0, -arm.y() - depth};  // the deepest point `depth` under the ground
+  const std::vector<double> detected_angle = s.angle;
+  gp::ContactSet contacts;
+  gp::Contact& c = contacts.append(1);
+  c.shape_a = 1;
+  c.body_a = 1;
+  c.normal = {0.0, 1.0};
+  gp::ContactPointState& p = contacts.points(c)[0];
+  p.depth = depth;
+  // The contact point is midway between the two deepest points.
+  const gp::Vec2 point = s.position[1] + arm + gp::Vec2{0.0, 0.5 * depth};
+  gp::set_arms(p, c.normal, point - s.position[1], point);
+  p.normal_mass = 1.0;
+  s.angle[1] = turn;
+  gp::RotationCache rotations;
+  gp::correct_positions(contacts, shapes, inertia, detected_angle, 1, 0.0, s, rotations);
+  return s.position[1].y() + arm.y() + depth;
+}
+
+}  // namespace
+
+TEST_CASE("A position pass measures the overlap at the deepest points as their bodies turned",
+          "[DD:angDisp]") {
+  constexpr double kDepth = 0.01;
+  constexpr double kTurn = 0.3;
+  // A box's corner at (−0.5, −0.5) turns with the box: turned by 0.3 rad it is
+  // 0.5 (cos 0.3 + sin 0.3) − 0.5 = 0.125 m lower. A pass lifts by a fifth of the overlap.
+  const gp::Vec2 corner{-0.5, -0.5};
+  const double corner_drop = -(std::sin(kTurn) * corner.x() + std::cos(kTurn) * corner.y()) - 0.5;
+  CHECK(lift_after_turn(gp::Shape::box(1.0, 1.0), corner, kDepth, kTurn) ==
+        Approx(0.2 * (kDepth + corner_drop)).epsilon(1e-12));
+  // A disc on its centre of mass: its lowest point is its lowest point whichever way it turns.
+  CHECK(lift_after_turn(gp::Shape::circle(0.5), {0.0, -0.5}, kDepth, kTurn) ==
+        Approx(0.2 * kDepth).epsilon(1e-12));
+  // A disc of radius 0.5 centred 1 m to the right of the centre of mass: turned by −0.3 rad, its
+  // centre drops by sin 0.3 m, and so does its lowest point.
+  CHECK(lift_after_turn(gp::Shape::circle(0.5, {1.0, 0.0}), {1.0, -0.5}, kDepth, -kTurn) ==
+        Approx(0.2 * (kDepth + std::sin(kTurn))).epsilon(1e-12));
 }
