@@ -106,7 +106,7 @@ TEST_CASE("Dropping contacts from a set keeps each remaining contact with its ow
     const int count = i % 2 == 0 ? 2 : 1;
     gp::Contact& c = set.append(count);
     c.shape_a = i;
-    for (int k = 0; k < count; ++k) set.points(c)[k].depth = 10.0 * i + k;
+    for (int k = 0; k < count; ++k) set.points(c)[k].depth = static_cast<float>(10 * i + k);
     if (count == 2) set.set_block(c, gp::NormalBlock{.k11 = static_cast<double>(i)});
   }
   CHECK(set.point_count() == 8);
@@ -116,7 +116,7 @@ TEST_CASE("Dropping contacts from a set keeps each remaining contact with its ow
   for (const gp::Contact& c : set) {
     REQUIRE(set.points(c).size() == (c.shape_a % 2 == 0 ? 2u : 1u));
     for (std::size_t k = 0; k < set.points(c).size(); ++k) {
-      CHECK(set.points(c)[k].depth == 10.0 * c.shape_a + static_cast<double>(k));
+      CHECK(set.points(c)[k].depth == static_cast<float>(10 * c.shape_a + k));
     }
     if (c.count() == 2) CHECK(set.block(c).k11 == static_cast<double>(c.shape_a));
   }
@@ -143,7 +143,7 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
   c.body_a = 1;
   c.normal = {0.0, 1.0};
   gp::ContactPointState& p = contacts.points(c)[0];
-  p.depth = depth;
+  p.depth = static_cast<float>(depth);
   // The contact point is midway between the two deepest points.
   const gp::Vec2 point = s.position[1] + arm + gp::Vec2{0.0, 0.5 * depth};
   gp::set_arms(p, c.normal, point - s.position[1], point);
@@ -158,7 +158,7 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
 
 TEST_CASE("A position pass measures the overlap at the deepest points as their bodies turned",
           "[DD:angDisp]") {
-  constexpr double kDepth = 0.01;
+  constexpr double kDepth = 1.0 / 64;  // m, exact as the float a contact point keeps
   constexpr double kTurn = 0.3;
   // A box's corner at (−0.5, −0.5) turns with the box: turned by 0.3 rad it is
   // 0.5 (cos 0.3 + sin 0.3) − 0.5 = 0.125 m lower. A pass lifts by a fifth of the overlap.

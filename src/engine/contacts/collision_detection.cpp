@@ -49,7 +49,7 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
     const ContactPoint& point = m.points[k];
     ContactPointState& q = points[k];
     q.id = point.id;
-    q.depth = point.depth;
+    q.depth = static_cast<float>(point.depth);
     set_arms(q, m.normal, point.position - s.position[a.body], point.position - s.position[b.body]);
   }
   return c;
