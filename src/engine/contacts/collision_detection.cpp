@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "engine/collision/narrowphase.hpp"
+#include "engine/collision/swept_boxes.hpp"
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
@@ -28,16 +29,11 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
                                                                   const std::vector<char>& dynamic,
                                                                   const WorldShapes& start,
                                                                   const WorldShapes& end) {
-  proxies_.resize(shapes.size());
-  // The shapes' bodies side by side: the pairs below look them up at random, and a whole shape
-  // record per look-up costs a cache miss each in a large scene.
+  // The shapes' bodies side by side: the broadphase and the pairs below look them up at random,
+  // and a whole shape record per look-up costs a cache miss each in a large scene.
   body_of_.resize(shapes.size());
-  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
-    body_of_[i] = shapes[i].body;
-    // A static proxy is one whose body collisions cannot move: the broadphase pairs no two.
-    proxies_[i] = {start.bounds(i).united(end.bounds(i)), i, !dynamic[body_of_[i]]};
-  }
-  broadphase_.find_pairs(proxies_, pairs_);
+  for (std::uint32_t i = 0; i < shapes.size(); ++i) body_of_[i] = shapes[i].body;
+  broadphase_.find_pairs(SweptBoxes(start, end, body_of_, dynamic), pairs_);
   // Two parts of one body never collide.
   std::erase_if(pairs_,
                 [this](const ProxyPair& p) { return body_of_[p.first] == body_of_[p.second]; });
