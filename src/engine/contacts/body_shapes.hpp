@@ -28,8 +28,11 @@ struct ShapeRecord {
 /// The shapes of a space, and their world placement for a given motion state.
 class BodyShapes {
  public:
+  /// The most shapes a space holds: the warm starts number them in 24 bits (WarmStart::key).
+  static constexpr std::size_t kMaxShapes = std::size_t{1} << 24;
+
   /// Adds shape `local` of `body` with its surface; shapes are added body by body, in increasing
-  /// body order.
+  /// body order. Throws std::length_error, adding nothing, past kMaxShapes shapes.
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }

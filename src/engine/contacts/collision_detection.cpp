@@ -92,11 +92,11 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
     if (m.count == 0) continue;
     Contact& c = append_contact(p, shapes, m, s, contacts);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
-    const std::uint64_t key = key_of(p);
-    while (old != previous.end() && old->key < key) ++old;
-    for (auto same = old; same != previous.end() && same->key == key; ++same) {
+    const std::uint64_t pair = WarmStart::pair_key(p);
+    while (old != previous.end() && old->pair() < pair) ++old;
+    for (auto same = old; same != previous.end() && same->pair() == pair; ++same) {
       for (ContactPointState& q : contacts.points(c)) {
-        if (same->id == q.id) {
+        if (same->features() == q.id.key()) {
           q.normal_impulse = impulse_scale * same->normal;
           q.tangent_impulse = impulse_scale * same->tangent;
         }
