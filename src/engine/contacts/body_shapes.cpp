@@ -24,7 +24,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
     polygon_vertices_ += count;
   }
-  append(records_, {kept, body, moves, restitution, friction});
+  append(records_, {PackedGeometry(kept), body, moves, restitution, friction});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {
