@@ -28,8 +28,7 @@ std::vector<ProxyPair> all_overlapping_pairs(const std::vector<BroadphaseProxy>&
       if (proxies[i]
               .bounds.fattened(0.5 * margin)
               .overlaps(proxies[j].bounds.fattened(0.5 * margin))) {
-        pairs.push_back(
-            {std::min(proxies[i].id, proxies[j].id), std::max(proxies[i].id, proxies[j].id)});
+        pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
       }
     }
   }
@@ -49,8 +48,8 @@ std::vector<ProxyPair> pairs_found(gp::SweepAndPrune& broadphase,
   return pairs;
 }
 
-BroadphaseProxy box_proxy(std::uint32_t id, const Vec2& center, const Vec2& size, bool is_static) {
-  return {Aabb{center - 0.5 * size, center + 0.5 * size}, id, is_static};
+BroadphaseProxy box_proxy(const Vec2& center, const Vec2& size, bool is_static) {
+  return {Aabb{center - 0.5 * size, center + 0.5 * size}, is_static};
 }
 
 // `count` unit boxes of dynamic bodies at random in a square `width` m wide, the same for a given
@@ -59,8 +58,8 @@ std::vector<BroadphaseProxy> random_unit_boxes(std::uint32_t count, double width
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> position(0.0, width);
   std::vector<BroadphaseProxy> proxies;
-  for (std::uint32_t id = 0; id < count; ++id) {
-    proxies.push_back(box_proxy(id, {position(random), position(random)}, {1.0, 1.0}, false));
+  for (std::uint32_t i = 0; i < count; ++i) {
+    proxies.push_back(box_proxy({position(random), position(random)}, {1.0, 1.0}, false));
   }
   return proxies;
 }
@@ -74,9 +73,9 @@ TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 ran
   std::uniform_real_distribution<double> size(0.1, 4.0);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<BroadphaseProxy> proxies;
-  for (std::uint32_t id = 0; id < 1000; ++id) {
-    proxies.push_back(box_proxy(id * 3 + 11, {position(random), position(random)},
-                                {size(random), size(random)}, unit(random) < 0.2));
+  for (int i = 0; i < 1000; ++i) {
+    proxies.push_back(box_proxy({position(random), position(random)}, {size(random), size(random)},
+                                unit(random) < 0.2));
   }
   const double margin = 0.1;
   gp::SweepAndPrune broadphase(margin);
@@ -151,8 +150,7 @@ TEST_CASE("Sweep and prune kept from step to step finds the pairs of all-pairs t
         if (m.center[axis] < 0.0 || m.center[axis] > 60.0) m.velocity[axis] = -m.velocity[axis];
       }
       const double breathing = 1.0 + 0.5 * std::sin(0.1 * step + i);
-      proxies.push_back(
-          box_proxy(i * 2 + 1, m.center, {m.size.x(), breathing * m.size.y()}, m.is_static));
+      proxies.push_back(box_proxy(m.center, {m.size.x(), breathing * m.size.y()}, m.is_static));
     }
     const std::vector<ProxyPair> found = sorted(pairs_found(broadphase, proxies));
     INFO("step " << step);
@@ -183,9 +181,9 @@ TEST_CASE("Sweep and prune sorts afresh when the boxes were shuffled since the l
 
 TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Collisions]") {
   // All boxes share one x interval, so a sweep along x alone would compare every pair.
-  std::vector<BroadphaseProxy> proxies{box_proxy(0, {0.0, -0.5}, {20.0, 1.0}, true)};
+  std::vector<BroadphaseProxy> proxies{box_proxy({0.0, -0.5}, {20.0, 1.0}, true)};
   for (std::uint32_t level = 0; level < 200; ++level) {
-    proxies.push_back(box_proxy(level + 1, {0.01 * (level % 3), 0.5 + level}, {1.0, 1.0}, false));
+    proxies.push_back(box_proxy({0.01 * (level % 3), 0.5 + level}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
   const std::vector<ProxyPair> pairs = sorted(pairs_found(broadphase, proxies));
@@ -207,9 +205,9 @@ TEST_CASE("Sweep and prune compares a few candidates per box in a scene spread b
 
 TEST_CASE("A huge box makes no more band entries than there are boxes",
           "[FR:Determine-Collisions]") {
-  std::vector<BroadphaseProxy> proxies{box_proxy(0, {0.0, 0.0}, {1e9, 1e9}, true)};
-  for (std::uint32_t id = 1; id <= 100; ++id) {
-    proxies.push_back(box_proxy(id, {1.5 * id, 2.0 * (id % 7)}, {1.0, 1.0}, false));
+  std::vector<BroadphaseProxy> proxies{box_proxy({0.0, 0.0}, {1e9, 1e9}, true)};
+  for (std::uint32_t i = 1; i <= 100; ++i) {
+    proxies.push_back(box_proxy({1.5 * i, 2.0 * (i % 7)}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
   const std::vector<ProxyPair> pairs = sorted(pairs_found(broadphase, proxies));
@@ -219,8 +217,8 @@ TEST_CASE("A huge box makes no more band entries than there are boxes",
 
 TEST_CASE("Two static proxies are never paired", "[FR:Determine-Collisions]") {
   std::vector<BroadphaseProxy> proxies;
-  for (std::uint32_t id = 0; id < 50; ++id) {
-    proxies.push_back(box_proxy(id, {0.1 * id, 0.0}, {2.0, 2.0}, id % 2 == 0));
+  for (std::uint32_t i = 0; i < 50; ++i) {
+    proxies.push_back(box_proxy({0.1 * i, 0.0}, {2.0, 2.0}, i % 2 == 0));
   }
   gp::SweepAndPrune broadphase(0.0);
   const std::vector<ProxyPair>& pairs = pairs_found(broadphase, proxies);
@@ -233,11 +231,11 @@ TEST_CASE("Two static proxies are never paired", "[FR:Determine-Collisions]") {
 }
 
 TEST_CASE("Boxes apart by up to the margin are paired", "[FR:Determine-Collisions]") {
-  const std::vector<BroadphaseProxy> proxies{box_proxy(1, {0.0, 0.0}, {1.0, 1.0}, false),
-                                             box_proxy(2, {1.09, 0.3}, {1.0, 1.0}, false)};
+  const std::vector<BroadphaseProxy> proxies{box_proxy({0.0, 0.0}, {1.0, 1.0}, false),
+                                             box_proxy({1.09, 0.3}, {1.0, 1.0}, false)};
   gp::SweepAndPrune wide(0.1);
   REQUIRE(pairs_found(wide, proxies).size() == 1);
-  CHECK(pairs_found(wide, proxies)[0] == ProxyPair{1, 2});
+  CHECK(pairs_found(wide, proxies)[0] == ProxyPair{0, 1});
   gp::SweepAndPrune narrow(0.08);
   CHECK(pairs_found(narrow, proxies).empty());
 }
@@ -245,8 +243,8 @@ TEST_CASE("Boxes apart by up to the margin are paired", "[FR:Determine-Collision
 TEST_CASE("A warmed-up sweep and prune reuses the pair buffer it is given",
           "[FR:Determine-Collisions]") {
   std::vector<BroadphaseProxy> proxies;
-  for (std::uint32_t id = 0; id < 100; ++id) {
-    proxies.push_back(box_proxy(id, {0.9 * id, 0.0}, {1.0, 1.0}, false));
+  for (std::uint32_t i = 0; i < 100; ++i) {
+    proxies.push_back(box_proxy({0.9 * i, 0.0}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
   std::vector<ProxyPair> pairs;
@@ -264,9 +262,9 @@ TEST_CASE("Boxes reaching the largest doubles are paired without overflow",
           "[FR:Determine-Collisions]") {
   // The top of the tall box is far beyond any band: its band number is clamped, not overflowed
   // (an undefined conversion the sanitizers report).
-  const std::vector<BroadphaseProxy> proxies{{Aabb{{-1.0, -1e308}, {1.0, 1.7e308}}, 0, false},
-                                             {Aabb{{0.0, 0.0}, {1.0, 1.0}}, 1, false},
-                                             {Aabb{{5.0, 0.0}, {6.0, 1.0}}, 2, false}};
+  const std::vector<BroadphaseProxy> proxies{{Aabb{{-1.0, -1e308}, {1.0, 1.7e308}}, false},
+                                             {Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
+                                             {Aabb{{5.0, 0.0}, {6.0, 1.0}}, false}};
   gp::SweepAndPrune broadphase(0.0);
   CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.0));
   CHECK(all_overlapping_pairs(proxies, 0.0) == std::vector<ProxyPair>{{0, 1}});
@@ -274,8 +272,8 @@ TEST_CASE("Boxes reaching the largest doubles are paired without overflow",
 
 TEST_CASE("A non-finite box, from a state about to be reported non-finite, is paired with none",
           "[FR:Determine-Collisions]") {
-  std::vector<BroadphaseProxy> proxies{{Aabb{{0.0, 0.0}, {1.0, 1.0}}, 0, false},
-                                       {Aabb{{0.5, 0.5}, {1.5, 1.5}}, 1, false}};
+  std::vector<BroadphaseProxy> proxies{{Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
+                                       {Aabb{{0.5, 0.5}, {1.5, 1.5}}, false}};
   gp::SweepAndPrune broadphase(0.0);
   REQUIRE(pairs_found(broadphase, proxies).size() == 1);
   proxies[1].bounds.max.y() = std::numeric_limits<double>::quiet_NaN();

@@ -6,61 +6,75 @@
 #include <limits>
 
 #include "engine/capacity.hpp"
+#include "engine/collision/swept_boxes.hpp"
 
 namespace gp {
 
-void SweepAndPrune::find_pairs(std::span<const BroadphaseProxy> proxies,
-                               std::vector<ProxyPair>& pairs) {
+template <BroadphaseBoxes Boxes>
+void SweepAndPrune::find_pairs(const Boxes& boxes, std::vector<ProxyPair>& pairs) {
   pairs.clear();
   candidates_tested_ = 0;
   entries_resorted_ = 0;
-  // A non-finite box comes from a state that the step reports as non-finite (NumericalError); the
-  // band arithmetic below would convert NaN or infinity to an integer, which is undefined. The
-  // same holds when the boxes span more than the range of a double.
-  const auto finite = [](const BroadphaseProxy& p) {
-    return p.bounds.min.allFinite() && p.bounds.max.allFinite();
-  };
-  if (proxies.empty() || !std::all_of(proxies.begin(), proxies.end(), finite)) {
+  const Survey found = survey(boxes);
+  if (!found.usable) {
     forget();
     return;
   }
-  double lowest = proxies.front().bounds.min.y() - half_margin_;
-  double highest = lowest;
-  for (const BroadphaseProxy& proxy : proxies) {
-    const double bottom = proxy.bounds.min.y() - half_margin_;
-    lowest = std::min(lowest, bottom);
-    highest = std::max(highest, bottom);
-  }
-  if (!std::isfinite(highest - lowest)) {
-    forget();
-    return;
-  }
-  place_bands(proxies, lowest, highest);
-  update_entries(proxies, highest);
-  sweep(proxies, pairs);
+  place_bands(boxes, found);
+  update_entries(boxes, found.highest);
+  sweep(pairs);
 }
 
-double SweepAndPrune::ideal_band_height(std::span<const BroadphaseProxy> proxies,
-                                        double bottoms_range) const {
+template <typename Boxes>
+SweepAndPrune::Survey SweepAndPrune::survey(const Boxes& boxes) const {
+  Survey found;
+  if (boxes.size() == 0) return found;
+  // One pass, as each box is made when it is read: the bottoms, and the heights that bands_suit
+  // weighs against the bands of the last call.
+  bool finite = true;
+  found.lowest = std::numeric_limits<double>::infinity();
+  found.highest = -found.lowest;
+  const double h = band_height_;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    const Aabb box = boxes.bounds(i);
+    finite = finite && box.min.allFinite() && box.max.allFinite();
+    const double bottom = box.min.y() - half_margin_;
+    found.lowest = std::min(found.lowest, bottom);
+    found.highest = std::max(found.highest, bottom);
+    const double height = grown_height(box);
+    found.up_to_band += height <= h;
+    found.below_quarter_band += height < 0.25 * h;
+  }
+  // A non-finite box comes from a state that the step reports as non-finite (NumericalError); the
+  // band arithmetic would convert NaN or infinity to an integer, which is undefined. The same
+  // holds when the boxes span more than the range of a double.
+  found.usable = finite && std::isfinite(found.highest - found.lowest);
+  return found;
+}
+
+template <typename Boxes>
+double SweepAndPrune::ideal_band_height(const Boxes& boxes, double bottoms_range) const {
   const double height =
-      std::max(2.0 * median_height(proxies), bottoms_range / static_cast<double>(proxies.size()));
+      std::max(2.0 * median_height(boxes), bottoms_range / static_cast<double>(boxes.size()));
   // Boxes all flat and level: any height gives them one band.
   return height > 0.0 ? height : 1.0;
 }
 
-double SweepAndPrune::median_height(std::span<const BroadphaseProxy> proxies) const {
+template <typename Boxes>
+double SweepAndPrune::median_height(const Boxes& boxes) const {
   // Found without a copy of the heights to select in, which would be kept as large as the
-  // proxies: the heights are ≥ 0 (never -0, as x - x is +0), and such doubles order as their bit
+  // boxes: the heights are ≥ 0 (never -0, as x - x is +0), and such doubles order as their bit
   // patterns do, so a binary search over the patterns finds it in at most 64 passes that count
   // the heights up to a pattern. The bands are placed seldom, so the passes cost little.
-  const std::size_t rank = proxies.size() / 2;
+  const std::size_t rank = boxes.size() / 2;
   std::uint64_t low = 0;
   std::uint64_t high = std::bit_cast<std::uint64_t>(std::numeric_limits<double>::infinity());
   while (low < high) {
     const std::uint64_t middle = low + (high - low) / 2;
     const double bound = std::bit_cast<double>(middle);
     std::size_t up_to = 0;
-    for (const BroadphaseProxy& proxy : proxies) up_to += grown_height(proxy) <= bound;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+      up_to += grown_height(boxes.bounds(i)) <= bound;
     if (up_to > rank) {
       high = middle;
     } else {
@@ -70,105 +84,92 @@ double SweepAndPrune::median_height(std::span<const BroadphaseProxy> proxies) co
   return std::bit_cast<double>(low);
 }
 
-void SweepAndPrune::place_bands(std::span<const BroadphaseProxy> proxies, double lowest,
-                                double highest) {
-  if (bands_suit(proxies, lowest, highest)) return;
+template <typename Boxes>
+void SweepAndPrune::place_bands(const Boxes& boxes, const Survey& survey) {
+  if (bands_suit(boxes.size(), survey)) return;
   forget();
   // Bands start at the lowest grown bottom. Bands above the highest bottom hold no overlap's
   // bottom, so no box needs entries there.
-  band_origin_ = lowest;
-  band_height_ = ideal_band_height(proxies, highest - lowest);
+  band_origin_ = survey.lowest;
+  band_height_ = ideal_band_height(boxes, survey.highest - survey.lowest);
 }
 
-bool SweepAndPrune::bands_suit(std::span<const BroadphaseProxy> proxies, double lowest,
-                               double highest) const {
+bool SweepAndPrune::bands_suit(std::size_t count, const Survey& survey) const {
   // Moving the bands moves nearly every entry, which then has to be sorted afresh; bands within a
   // factor of two of the ideal height cost little more to sweep. They must still start at or
   // below the lowest bottom, and hold the bottoms in at most about 2N bands.
   const double h = band_height_;
-  const double count = static_cast<double>(proxies.size());
-  if (!(h > 0.0) || lowest < band_origin_ || highest - band_origin_ > 2.0 * count * h) {
+  const double n = static_cast<double>(count);
+  if (!(h > 0.0) || survey.lowest < band_origin_ || survey.highest - band_origin_ > 2.0 * n * h) {
     return false;
   }
   // The ideal is max(2m, range / N) for the median height m: h ≥ ideal / 2 when h ≥ m and
-  // h ≥ range / 2N, and h ≤ 2 · ideal when h ≤ 4m or h ≤ 2 · range / N. Counting the boxes no
-  // taller than h and those shorter than h / 4 places m against both without finding it.
-  const double range = highest - lowest;
-  if (h < range / (2.0 * count)) return false;
-  std::size_t up_to_h = 0;
-  std::size_t below_quarter_h = 0;
-  for (const BroadphaseProxy& proxy : proxies) {
-    const double height = grown_height(proxy);
-    up_to_h += height <= h;
-    below_quarter_h += height < 0.25 * h;
-  }
+  // h ≥ range / 2N, and h ≤ 2 · ideal when h ≤ 4m or h ≤ 2 · range / N. The boxes no taller
+  // than h and those shorter than h / 4 place m against both without finding it.
+  const double range = survey.highest - survey.lowest;
+  if (h < range / (2.0 * n)) return false;
   // m is the height of rank N / 2 (from 0): m ≤ h when more than N / 2 boxes are no taller than
   // h, and m ≥ h / 4 when at most N / 2 are shorter than h / 4.
-  const std::size_t median_rank = proxies.size() / 2;
-  return up_to_h > median_rank && (h <= 2.0 * range / count || below_quarter_h <= median_rank);
+  const std::size_t median_rank = count / 2;
+  return survey.up_to_band > median_rank &&
+         (h <= 2.0 * range / n || survey.below_quarter_band <= median_rank);
 }
 
-SweepAndPrune::Entry SweepAndPrune::entry(std::span<const BroadphaseProxy> proxies,
-                                          std::int32_t band, std::uint32_t p) const {
-  const Aabb grown = proxies[p].bounds.fattened(half_margin_);
-  return Entry{grown.min.x(),
-               grown.max.x(),
-               grown.min.y(),
-               grown.max.y(),
-               band,
-               p << 2 | (proxies[p].is_static ? Entry::kStatic : 0) |
-                   (band == new_bands_[p].first ? Entry::kBottom : 0)};
-}
-
-void SweepAndPrune::update_entries(std::span<const BroadphaseProxy> proxies, double highest) {
+template <typename Boxes>
+void SweepAndPrune::update_entries(const Boxes& boxes, double highest) {
   const std::int64_t last_band = band_of(highest);
-  new_bands_.resize(proxies.size());
-  for (std::size_t p = 0; p < proxies.size(); ++p) {
-    const Aabb grown = proxies[p].bounds.fattened(half_margin_);
-    // Between 0 (no bottom is below the origin) and last_band, which 32 bits hold.
-    new_bands_[p] = {static_cast<std::int32_t>(band_of(grown.min.y())),
-                     static_cast<std::int32_t>(std::min(band_of(grown.max.y()), last_band))};
-  }
   if (entries_.empty()) {
-    build_entries(proxies);
+    build_entries(boxes, last_band);
     return;
   }
-  // Each proxy of the last call has exactly one entry in each band of bands_[p]: those of its
+  // Each box of the last call has exactly one entry in each band of bands_[i]: those of its
   // bands now are kept in place, where they are nearly sorted still.
   std::size_t kept = 0;
   for (const Entry& old : entries_) {
-    if (old.proxy() >= proxies.size()) continue;
-    const BandRange& now = new_bands_[old.proxy()];
+    const std::uint32_t i = old.box();
+    if (i >= boxes.size()) continue;
+    const Aabb grown = boxes.bounds(i).fattened(half_margin_);
+    const BandRange now = bands_of(grown, last_band);
     if (old.band < now.first || old.band > now.last) continue;
-    entries_[kept++] = entry(proxies, old.band, old.proxy());
+    entries_[kept++] = entry(grown, old.band, i, now, boxes.is_static(i));
   }
   entries_.resize(kept);
   added_.clear();
-  for (std::uint32_t p = 0; p < proxies.size(); ++p) {
-    const BandRange before = p < bands_.size() ? bands_[p] : BandRange{0, -1};
-    const BandRange& now = new_bands_[p];
+  const std::size_t known = bands_.size();
+  bands_.resize(boxes.size());
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    const BandRange before = i < known ? bands_[i] : BandRange{0, -1};
+    const Aabb grown = boxes.bounds(i).fattened(half_margin_);
+    const BandRange now = bands_of(grown, last_band);
     for (std::int32_t band = now.first; band <= now.last; ++band) {
-      if (band < before.first || band > before.last) added_.push_back(entry(proxies, band, p));
+      if (band < before.first || band > before.last) {
+        added_.push_back(entry(grown, band, i, now, boxes.is_static(i)));
+      }
     }
+    bands_[i] = now;
   }
-  bands_.swap(new_bands_);
   sort_entries();
 }
 
-void SweepAndPrune::build_entries(std::span<const BroadphaseProxy> proxies) {
+template <typename Boxes>
+void SweepAndPrune::build_entries(const Boxes& boxes, std::int64_t last_band) {
   // Straight into entries_, sized to them: going through added_ would keep a second buffer as
   // large as all the entries for the rest of the run.
+  bands_.resize(boxes.size());
   std::size_t count = 0;
-  for (const BandRange& bands : new_bands_) count += bands.last - bands.first + 1;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    bands_[i] = bands_of(boxes.bounds(i).fattened(half_margin_), last_band);
+    count += bands_[i].last - bands_[i].first + 1;
+  }
   reserve_for(entries_, count);
-  for (std::uint32_t p = 0; p < proxies.size(); ++p) {
-    for (std::int32_t band = new_bands_[p].first; band <= new_bands_[p].last; ++band) {
-      entries_.push_back(entry(proxies, band, p));
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    const Aabb grown = boxes.bounds(i).fattened(half_margin_);
+    for (std::int32_t band = bands_[i].first; band <= bands_[i].last; ++band) {
+      entries_.push_back(entry(grown, band, i, bands_[i], boxes.is_static(i)));
     }
   }
   std::sort(entries_.begin(), entries_.end());
   entries_resorted_ = entries_.size();
-  bands_.swap(new_bands_);
 }
 
 void SweepAndPrune::sort_entries() {
@@ -211,7 +212,7 @@ void SweepAndPrune::sort_entries() {
   }
 }
 
-void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs) {
+void SweepAndPrune::sweep(std::vector<ProxyPair>& pairs) {
   // The entries and the count in locals: pairs growing might, for all the compiler knows, change
   // the members, which it would then reload at every candidate.
   const std::span<const Entry> entries(entries_);
@@ -226,8 +227,8 @@ void SweepAndPrune::sweep(std::span<const BroadphaseProxy> proxies, std::vector<
       if (entry.has(Entry::kStatic) && other.has(Entry::kStatic)) continue;
       if (other.bottom > entry.top || entry.bottom > other.top) continue;
       if (!entry.has(Entry::kBottom) && !other.has(Entry::kBottom)) continue;
-      const std::uint32_t a = proxies[entry.proxy()].id;
-      const std::uint32_t b = proxies[other.proxy()].id;
+      const std::uint32_t a = entry.box();
+      const std::uint32_t b = other.box();
       append(pairs, {std::min(a, b), std::max(a, b)});
     }
   }
@@ -239,5 +240,8 @@ void SweepAndPrune::forget() {
   bands_.clear();
   band_height_ = 0.0;
 }
+
+template void SweepAndPrune::find_pairs(const ProxyBoxes&, std::vector<ProxyPair>&);
+template void SweepAndPrune::find_pairs(const SweptBoxes&, std::vector<ProxyPair>&);
 
 }  // namespace gp

@@ -2,7 +2,9 @@
 // Candidate pairs for the narrowphase: the shapes whose bounding boxes overlap
 // (FR:Determine-Collisions), found by sweep and prune instead of testing all pairs.
 
+#include <algorithm>
 #include <compare>
+#include <concepts>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -11,15 +13,33 @@
 
 namespace gp {
 
-/// One shape's entry for a broadphase step.
-struct BroadphaseProxy {
-  // The box first: ahead of the id, its 16-byte alignment would pad the proxy to 64 bytes.
-  Aabb bounds;       ///< m, world; a non-finite one makes find_pairs report no pair
-  std::uint32_t id;  ///< the caller's handle for the shape, reported back in pairs
-  bool is_static;    ///< its body never moves: two static proxies are never paired
+/// What the broadphase pairs: `size()` boxes, read by index as `bounds(i)` (m, world; a
+/// non-finite one makes find_pairs report no pair) and `is_static(i)` (its body never moves: two
+/// static boxes are never paired). Read several times per call, rather than copied into a list
+/// the size of the scene that the broadphase would keep.
+template <typename Boxes>
+concept BroadphaseBoxes = requires(const Boxes& boxes, std::uint32_t i) {
+  { boxes.size() } -> std::convertible_to<std::size_t>;
+  { boxes.bounds(i) } -> std::convertible_to<Aabb>;
+  { boxes.is_static(i) } -> std::convertible_to<bool>;
 };
 
-/// The ids of two proxies whose boxes overlap, first < second.
+/// A box given whole, for callers that have their boxes at hand.
+struct BroadphaseProxy {
+  Aabb bounds;     ///< m, world
+  bool is_static;  ///< its body never moves
+};
+
+/// A list of proxies read as BroadphaseBoxes.
+struct ProxyBoxes {
+  std::span<const BroadphaseProxy> proxies;
+
+  std::size_t size() const { return proxies.size(); }
+  const Aabb& bounds(std::uint32_t i) const { return proxies[i].bounds; }
+  bool is_static(std::uint32_t i) const { return proxies[i].is_static; }
+};
+
+/// The indices of two boxes that overlap, first < second.
 struct ProxyPair {
   std::uint32_t first;
   std::uint32_t second;
@@ -45,12 +65,17 @@ class SweepAndPrune {
   /// make speculative contacts with the same margin.
   explicit SweepAndPrune(double margin = 0.0) : half_margin_(0.5 * margin) {}
 
-  /// Replaces `pairs` with the pairs of `proxies` (at most 2³⁰ of them) whose boxes, each grown
-  /// by margin / 2 on every side, overlap (touching counts), except static with static; each pair
+  /// Replaces `pairs` with the pairs of `boxes` (at most 2³⁰ of them) that, each grown by
+  /// margin / 2 on every side, overlap (touching counts), except static with static; each pair
   /// once, in no particular order. The caller keeps the pairs, so that it can filter and sort them
   /// where they are. Allocates nothing once its buffers, and `pairs`, have grown to the scene.
-  /// Fastest when each proxy keeps its position in `proxies` from call to call.
-  void find_pairs(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs);
+  /// Fastest when each box keeps its index from call to call. Instantiated in broadphase.cpp for
+  /// ProxyBoxes and SweptBoxes.
+  template <BroadphaseBoxes Boxes>
+  void find_pairs(const Boxes& boxes, std::vector<ProxyPair>& pairs);
+  void find_pairs(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs) {
+    find_pairs(ProxyBoxes{proxies}, pairs);
+  }
 
   /// How many pairs of band entries the last call compared, those found plus those rejected:
   /// the measure of its cost.
@@ -61,22 +86,22 @@ class SweepAndPrune {
   std::size_t entries_resorted() const { return entries_resorted_; }
 
  private:
-  /// A proxy's grown box, in one of the bands it spans. 40 bytes: there are more entries than
-  /// proxies, and they are most of the broadphase's memory.
+  /// A grown box, in one of the bands it spans. 40 bytes: there are more entries than
+  /// boxes, and they are most of the broadphase's memory.
   struct Entry {
     double left;
     double right;
     double bottom;
     double top;
     std::int32_t band;
-    /// Four times the index in the proxies of the call, plus the flags below.
+    /// Four times the index of the box in the call, plus the flags below.
     std::uint32_t tag;
     static constexpr std::uint32_t kStatic = 1;
     /// The band holds the box's bottom. The bottom of an overlap is the higher of the two
     /// bottoms, so the band holds it when it holds either box's bottom.
     static constexpr std::uint32_t kBottom = 2;
 
-    std::uint32_t proxy() const { return tag >> 2; }
+    std::uint32_t box() const { return tag >> 2; }
     bool has(std::uint32_t flag) const { return (tag & flag) != 0; }
 
     bool operator<(const Entry& other) const {
@@ -84,28 +109,44 @@ class SweepAndPrune {
     }
   };
 
-  /// The bands [first, last] a proxy's entries are in; none when first > last. The bands that
+  /// The bands [first, last] a box's entries are in; none when first > last. The bands that
   /// hold entries number at most about 2N (see bands_suit), so 32 bits count them.
   struct BandRange {
     std::int32_t first;
     std::int32_t last;
   };
 
+  /// What one pass over the boxes finds for placing the bands.
+  struct Survey {
+    bool usable = false;   ///< the boxes, and the spread of their bottoms, are finite
+    double lowest = 0.0;   ///< m: the lowest grown bottom
+    double highest = 0.0;  ///< m: the highest grown bottom
+    /// The grown boxes no taller than the band height of the last call, and those shorter than a
+    /// quarter of it (see bands_suit).
+    std::size_t up_to_band = 0;
+    std::size_t below_quarter_band = 0;
+  };
+  template <typename Boxes>
+  Survey survey(const Boxes& boxes) const;
+
   /// Twice the median box height (m), widened when needed so that there are at most about N
   /// bands across `bottoms_range` (m), the spread of the boxes' bottoms: a single huge box then
-  /// cannot make more entries than there are proxies.
-  double ideal_band_height(std::span<const BroadphaseProxy> proxies, double bottoms_range) const;
+  /// cannot make more entries than there are boxes.
+  template <typename Boxes>
+  double ideal_band_height(const Boxes& boxes, double bottoms_range) const;
   /// The height of rank N / 2 (from 0) of the grown boxes (m).
-  double median_height(std::span<const BroadphaseProxy> proxies) const;
-  double grown_height(const BroadphaseProxy& proxy) const {
-    return proxy.bounds.max.y() - proxy.bounds.min.y() + 2.0 * half_margin_;
+  template <typename Boxes>
+  double median_height(const Boxes& boxes) const;
+  double grown_height(const Aabb& box) const {
+    return box.max.y() - box.min.y() + 2.0 * half_margin_;
   }
-  /// Keeps the bands of the last call when they still suit boxes whose grown bottoms span
-  /// [lowest, highest] (m); else places them anew and forgets the entries.
-  void place_bands(std::span<const BroadphaseProxy> proxies, double lowest, double highest);
+  /// Keeps the bands of the last call when they still suit the `count` boxes `survey` describes;
+  /// else places them anew and forgets the entries.
+  template <typename Boxes>
+  void place_bands(const Boxes& boxes, const Survey& survey);
   /// Whether the bands of the last call still suit those boxes: a height within a factor of two
   /// of ideal_band_height, found in O(N) without the median's copy and selection.
-  bool bands_suit(std::span<const BroadphaseProxy> proxies, double lowest, double highest) const;
+  bool bands_suit(std::size_t count, const Survey& survey) const;
   std::int64_t band_of(double y) const {
     // A top far above the bottoms (up to the largest double, over a height that may itself be
     // infinite) lies in a band past the last one that matters: clamped, NaN included, so that the
@@ -114,17 +155,34 @@ class SweepAndPrune {
     const double band = (y - band_origin_) / band_height_;
     return static_cast<std::int64_t>(band < kBeyondAnyBand ? band : kBeyondAnyBand);
   }
-  /// Brings the entries of the last call to `proxies`, whose highest grown bottom is `highest`
-  /// (m): drops those whose box left their band, refreshes the others, adds those of the bands
-  /// newly spanned, and sorts them again.
-  void update_entries(std::span<const BroadphaseProxy> proxies, double highest);
+  /// The bands a grown box has entries in, up to `last_band`, that of the highest grown bottom.
+  BandRange bands_of(const Aabb& grown, std::int64_t last_band) const {
+    // Between 0 (no bottom is below the origin) and last_band, which 32 bits hold.
+    return {static_cast<std::int32_t>(band_of(grown.min.y())),
+            static_cast<std::int32_t>(std::min(band_of(grown.max.y()), last_band))};
+  }
+  /// Brings the entries of the last call to `boxes`, whose highest grown bottom is `highest` (m):
+  /// drops those whose box left their band, refreshes the others, adds those of the bands newly
+  /// spanned, and sorts them again.
+  template <typename Boxes>
+  void update_entries(const Boxes& boxes, double highest);
   /// Makes every entry anew and sorts them, when none is kept from the last call.
-  void build_entries(std::span<const BroadphaseProxy> proxies);
+  template <typename Boxes>
+  void build_entries(const Boxes& boxes, std::int64_t last_band);
   /// Restores the order of the entries kept from the last call, then merges in those added.
   void sort_entries();
-  void sweep(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs);
-  /// Proxy `p`'s entry in `band`.
-  Entry entry(std::span<const BroadphaseProxy> proxies, std::int32_t band, std::uint32_t p) const;
+  void sweep(std::vector<ProxyPair>& pairs);
+  /// The entry in `band` of box `i`, grown to `grown`, whose bands are `bands`.
+  static Entry entry(const Aabb& grown, std::int32_t band, std::uint32_t i, const BandRange& bands,
+                     bool is_static) {
+    return Entry{
+        grown.min.x(),
+        grown.max.x(),
+        grown.min.y(),
+        grown.max.y(),
+        band,
+        i << 2 | (is_static ? Entry::kStatic : 0) | (band == bands.first ? Entry::kBottom : 0)};
+  }
   /// Drops the entries and the bands: the next call places and sorts them from scratch.
   void forget();
 
@@ -133,10 +191,9 @@ class SweepAndPrune {
   double band_height_ = 0.0;  // m; 0 while no bands are placed
   std::size_t candidates_tested_ = 0;
   std::size_t entries_resorted_ = 0;
-  std::vector<BandRange> bands_;      // per proxy of the last call
-  std::vector<BandRange> new_bands_;  // per proxy of this call
-  std::vector<Entry> entries_;        // sorted by band, then left, between calls
-  std::vector<Entry> added_;          // scratch: entries of bands newly spanned
+  std::vector<BandRange> bands_;  // per box of the last call, then of this one
+  std::vector<Entry> entries_;    // sorted by band, then left, between calls
+  std::vector<Entry> added_;      // scratch: entries of bands newly spanned
 };
 
 }  // namespace gp

@@ -1,6 +1,7 @@
 #include "engine/contacts/body_shapes.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <variant>
 
 #include "engine/capacity.hpp"
@@ -10,6 +11,9 @@ namespace gp {
 
 void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
                      bool moves) {
+  if (size() == kMaxShapes) {
+    throw std::length_error("BodyShapes::add: more than 2^24 (16777216) shapes in a space");
+  }
   while (first_.size() <= body) append(first_, static_cast<std::uint32_t>(size()));
   GeometryView kept = view_of(local.geometry());
   if (const auto* polygon = std::get_if<PolygonView>(&kept)) {
@@ -20,7 +24,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
     polygon_vertices_ += count;
   }
-  append(records_, {kept, body, moves, restitution, friction});
+  append(records_, {PackedGeometry(kept), body, moves, restitution, friction});
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {

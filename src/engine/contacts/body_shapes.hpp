@@ -10,15 +10,17 @@
 
 #include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
+#include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
 
 /// A shape of a body, in the body frame centred on the centre of mass; a polygon's vertices are
-/// BodyShapes' to keep.
+/// BodyShapes' to keep. 72 bytes: with the geometry as a GeometryView, whose variant and 16-byte
+/// alignment take 64 bytes, it would take 96.
 struct ShapeRecord {
-  GeometryView local;
+  PackedGeometry local;
   BodyId body;
   bool moves;  ///< false for the shapes of static bodies
   double restitution;
@@ -28,8 +30,11 @@ struct ShapeRecord {
 /// The shapes of a space, and their world placement for a given motion state.
 class BodyShapes {
  public:
+  /// The most shapes a space holds: the warm starts number them in 24 bits (WarmStart::key).
+  static constexpr std::size_t kMaxShapes = std::size_t{1} << 24;
+
   /// Adds shape `local` of `body` with its surface; shapes are added body by body, in increasing
-  /// body order.
+  /// body order. Throws std::length_error, adding nothing, past kMaxShapes shapes.
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
@@ -53,8 +58,6 @@ class BodyShapes {
   void place(const Pose& pose, WorldShapes& world) const;
 
  private:
-  // Not packed as the placed shapes are: the contacts read them by reference, and a record made
-  // at each read costs more time than the 24 bytes per shape it would save.
   std::vector<ShapeRecord> records_;
   // Per polygon, its vertices then its normals: a block each, which stays where it is as shapes
   // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
@@ -70,8 +73,8 @@ void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
   for (std::size_t i = 0; i < records_.size(); ++i) {
     const ShapeRecord& r = records_[i];
     if (!r.moves && !first) continue;
-    const auto* disc = std::get_if<Circle>(&r.local);
-    const bool turning_moves_it = disc == nullptr || disc->center != Vec2::Zero();
+    const bool turning_moves_it =
+        r.local.kind() != ShapeKind::kCircle || r.local.circle().center != Vec2::Zero();
     const auto [position, angle] = pose(r.body);
     world.place(i, r.local, turning_moves_it ? Transform(position, angle) : Transform(position));
   }

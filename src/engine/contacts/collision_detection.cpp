@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "engine/collision/narrowphase.hpp"
+#include "engine/collision/swept_boxes.hpp"
 
 namespace gp {
 
@@ -12,16 +13,11 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
                                                                   const std::vector<char>& dynamic,
                                                                   const WorldShapes& start,
                                                                   const WorldShapes& end) {
-  proxies_.resize(shapes.size());
-  // The shapes' bodies side by side: the pairs below look them up at random, and a whole shape
-  // record per look-up costs a cache miss each in a large scene.
+  // The shapes' bodies side by side: the broadphase and the pairs below look them up at random,
+  // and a whole shape record per look-up costs a cache miss each in a large scene.
   body_of_.resize(shapes.size());
-  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
-    body_of_[i] = shapes[i].body;
-    // A static proxy is one whose body collisions cannot move: the broadphase pairs no two.
-    proxies_[i] = {start.bounds(i).united(end.bounds(i)), i, !dynamic[body_of_[i]]};
-  }
-  broadphase_.find_pairs(proxies_, pairs_);
+  for (std::uint32_t i = 0; i < shapes.size(); ++i) body_of_[i] = shapes[i].body;
+  broadphase_.find_pairs(SweptBoxes(start, end, body_of_, dynamic), pairs_);
   // Two parts of one body never collide.
   std::erase_if(pairs_,
                 [this](const ProxyPair& p) { return body_of_[p.first] == body_of_[p.second]; });
@@ -66,11 +62,11 @@ void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
     if (m.count == 0) continue;
     Contact& c = append_contact(p, shapes, m, s, contacts);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
-    const std::uint64_t key = key_of(p);
-    while (old != previous.end() && old->key < key) ++old;
-    for (auto same = old; same != previous.end() && same->key == key; ++same) {
+    const std::uint64_t pair = WarmStart::pair_key(p);
+    while (old != previous.end() && old->pair() < pair) ++old;
+    for (auto same = old; same != previous.end() && same->pair() == pair; ++same) {
       for (ContactPointState& q : contacts.points(c)) {
-        if (same->id == q.id) {
+        if (same->features() == q.id.key()) {
           q.normal_impulse = impulse_scale * same->normal;
           q.tangent_impulse = impulse_scale * same->tangent;
         }

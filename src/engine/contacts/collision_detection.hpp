@@ -43,7 +43,6 @@ class CollisionDetection {
   double margin_;
   SweepAndPrune broadphase_;
   PairOrder pair_order_;
-  std::vector<BroadphaseProxy> proxies_;
   std::vector<BodyId> body_of_;   // per shape
   std::vector<ProxyPair> pairs_;  // the broadphase's, filtered and sorted in place
 };

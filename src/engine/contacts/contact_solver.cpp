@@ -435,11 +435,11 @@ struct Anchor {
 // on its body's centre of mass, the common case, needs none.
 template <typename Arm>
 Anchor anchor(const ShapeRecord& shape, const Arm& arm, const Vec2& outward) {
-  const auto* disc = std::get_if<Circle>(&shape.local);
-  if (disc == nullptr) return {arm(), 0.0};
+  if (shape.local.kind() != ShapeKind::kCircle) return {arm(), 0.0};
+  const Circle disc = shape.local.circle();
   // Zero exactly rather than by round-off, which would cost the rotation trigonometry.
-  if (disc->center.x() == 0.0 && disc->center.y() == 0.0) return {Vec2::Zero(), disc->radius};
-  return {arm() - disc->radius * outward, disc->radius};
+  if (disc.center.x() == 0.0 && disc.center.y() == 0.0) return {Vec2::Zero(), disc.radius};
+  return {arm() - disc.radius * outward, disc.radius};
 }
 
 }  // namespace

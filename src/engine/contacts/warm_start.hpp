@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/collision/broadphase.hpp"
 #include "engine/collision/contact.hpp"
 #include "engine/contacts/contact_set.hpp"
 
@@ -14,10 +15,22 @@ namespace gp {
 /// The accumulated impulses of one contact point, found again by its contact's pair of shapes
 /// and its pair of features.
 struct WarmStart {
-  std::uint64_t key;  ///< Contact::key
-  FeatureId id;
+  /// Shape indices fit in this many bits (BodyShapes holds no more shapes), so that the pair and
+  /// the features share one key: 24 bytes a point, where the three apart take 32.
+  static constexpr int kShapeBits = 24;
+
+  /// The key of the pair of shapes (first, second) alone, ordered as the pairs are.
+  static std::uint64_t pair_key(const ProxyPair& pair) {
+    return (std::uint64_t{pair.first} << kShapeBits) | pair.second;
+  }
+
+  /// The pair's key, then the features' (FeatureId::key): ordered as the contacts, by pair.
+  std::uint64_t key;
   double normal;   ///< N·s
   double tangent;  ///< N·s
+
+  std::uint64_t pair() const { return key >> 16; }
+  std::uint16_t features() const { return static_cast<std::uint16_t>(key); }
 };
 
 /// Replaces `kept` by the impulses of the points of `contacts`, in the same order.

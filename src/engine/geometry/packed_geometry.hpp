@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <variant>
 
 #include "engine/geometry/shape.hpp"
 
@@ -24,6 +25,10 @@ class PackedGeometry {
       : polygon_{polygon.vertices.data(), static_cast<std::uint32_t>(polygon.vertices.size())},
         kind_(ShapeKind::kPolygon) {}
 
+  /// Packs any geometry; as above, a polygon's normals must follow its vertices.
+  explicit PackedGeometry(const GeometryView& geometry)
+      : PackedGeometry(std::visit([](const auto& g) { return PackedGeometry(g); }, geometry)) {}
+
   ShapeKind kind() const { return kind_; }
 
   GeometryView view() const {
@@ -37,6 +42,8 @@ class PackedGeometry {
     }
     return polygon();
   }
+  /// Viewed where a GeometryView is asked for, so that a packed geometry is read as any other.
+  operator GeometryView() const { return view(); }
   /// The geometry of each kind, for a caller that has switched on kind() already.
   // The points are loaded whole, not built from two scalars: that goes through the stack, and the
   // wide load of the view made from them stalls on the two narrow stores.

@@ -13,17 +13,32 @@ void WorldShapes::lay_out(std::size_t count, std::size_t polygons, std::size_t p
 }
 
 void WorldShapes::place(std::size_t i, const GeometryView& local, const Transform& transform) {
+  // Not through a PackedGeometry: a polygon's normals need not follow its vertices here.
+  if (const auto* polygon = std::get_if<PolygonView>(&local)) {
+    place_in_pool(i, *polygon, transform);
+  } else {
+    place(i, PackedGeometry(local), transform);
+  }
+}
+
+void WorldShapes::place(std::size_t i, const PackedGeometry& local, const Transform& transform) {
   // A disc or a segment straight into its packed form: through to_world, it would be built as a
   // WorldShape, with room for a polygon, first.
-  if (const auto* circle = std::get_if<Circle>(&local)) {
-    shapes_[i] = PackedGeometry(moved(*circle, transform));
-    return;
+  switch (local.kind()) {
+    case ShapeKind::kCircle:
+      shapes_[i] = PackedGeometry(moved(local.circle(), transform));
+      return;
+    case ShapeKind::kSegment:
+      shapes_[i] = PackedGeometry(moved(local.segment(), transform));
+      return;
+    case ShapeKind::kPolygon:
+      break;
   }
-  if (const auto* segment = std::get_if<Segment>(&local)) {
-    shapes_[i] = PackedGeometry(moved(*segment, transform));
-    return;
-  }
-  const auto& polygon = std::get<PolygonView>(local);
+  place_in_pool(i, local.polygon(), transform);
+}
+
+void WorldShapes::place_in_pool(std::size_t i, const PolygonView& polygon,
+                                const Transform& transform) {
   const std::size_t count = polygon.vertices.size();
   const std::size_t room_size = 2 * count + 2;
   Vec2* room = nullptr;

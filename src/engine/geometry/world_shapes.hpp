@@ -28,6 +28,8 @@ class WorldShapes {
   /// Places shape `i`, `local` (body frame) moved into the world by `transform`. A polygon keeps
   /// the room it was first given, and so must keep its vertex count.
   void place(std::size_t i, const GeometryView& local, const Transform& transform);
+  /// The same for a shape kept packed (see ShapeRecord), without viewing it first.
+  void place(std::size_t i, const PackedGeometry& local, const Transform& transform);
 
   std::size_t size() const { return shapes_.size(); }
   /// The box of shape `i` as placed, without the view around it.
@@ -50,6 +52,9 @@ class WorldShapes {
   WorldShapeView operator[](std::size_t i) const { return {shapes_[i].view(), bounds(i)}; }
 
  private:
+  /// Places polygon `local` in the room of shape i in the pool, given it on its first placement.
+  void place_in_pool(std::size_t i, const PolygonView& local, const Transform& transform);
+
   std::vector<PackedGeometry> shapes_;
   std::vector<Vec2> pool_;  // per polygon, its vertices, its normals, its box's min and max
 };
