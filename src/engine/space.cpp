@@ -81,8 +81,7 @@ double Space::moment(BodyId body) const {
 }
 
 BodyState Space::state(BodyId body) const {
-  return {state_.position[body], state_.angle[body], state_.velocity[body],
-          state_.angular_velocity[body]};
+  return state_.of(body);
 }
 
 void Space::step(double dt) {

@@ -97,11 +97,18 @@ void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
                            const Accelerations& acceleration) const {
   // Under constant accelerations the path through the state just after the impact, followed
   // back by τ, starts where the body must start to pass through that state.
-  const Ballistic back{at_impact_, acceleration};
-  start.position[b] = back.position(b, -tau);
-  start.angle[b] = back.angle(b, -tau);
-  start.velocity[b] = back.velocity(b, -tau);
-  start.angular_velocity[b] = back.angular_velocity(b, -tau);
+  const Ballistic back{start, acceleration};
+  const BodyState from{back.position(b, -tau), back.angle(b, -tau), back.velocity(b, -tau),
+                       back.angular_velocity(b, -tau)};
+  start.set(b, from);
+}
+
+void LocalImpacts::move_to_impact(BodyId b, double tau, MotionState& start,
+                                  const Accelerations& acceleration) const {
+  const Ballistic motion{start, acceleration};
+  const BodyState at{motion.position(b, tau), motion.angle(b, tau), motion.velocity(b, tau),
+                     motion.angular_velocity(b, tau)};
+  start.set(b, at);
 }
 
 bool LocalImpacts::resolve(double t, double h, MotionState& start,
@@ -114,7 +121,6 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
   for (std::size_t i = 0; i < shapes_.size(); ++i) {
     swept_[i] = world_start[i].bounds.united(end[i].bounds).fattened(half_margin);
   }
-  at_impact_.resize(start.position.size());
   is_changed_.assign(start.position.size(), 0);
   const double same_time = simultaneity(h);
   while (!pending_.empty() && impacts < settings_.max_impacts_per_step) {
@@ -124,26 +130,32 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
         })->time;
     group_.clear();
     changed_.clear();
+    held_.clear();
+    // The group's bodies are moved to the impact in `start` itself, which is the step's scratch:
+    // only the static and kinematic ones, whose paths the impact does not change, are held aside
+    // to be put back after it.
     for (const Pending& e : pending_) {
       if (e.time > tau + same_time) continue;
       group_.push_back(e.pair);
       for (std::uint32_t shape : {e.pair.first, e.pair.second}) {
         const BodyId b = shapes_[shape].body;
-        at_impact_.position[b] = motion.position(b, tau);
-        at_impact_.angle[b] = motion.angle(b, tau);
-        at_impact_.velocity[b] = motion.velocity(b, tau);
-        at_impact_.angular_velocity[b] = motion.angular_velocity(b, tau);
-        if (dynamic_[b] && !is_changed_[b]) {
+        if (dynamic_[b]) {
+          if (is_changed_[b]) continue;
           is_changed_[b] = 1;
           changed_.push_back(b);
+        } else {
+          if (std::any_of(held_.begin(), held_.end(), [b](const Held& x) { return x.body == b; }))
+            continue;
+          held_.push_back({b, start.of(b)});
         }
+        move_to_impact(b, tau, start, acceleration);
       }
     }
     std::sort(group_.begin(), group_.end());
-    resolve_impacts(group_, shapes_, inertia_, settings_, t + tau, at_impact_, impact_contacts_,
-                    log);
+    resolve_impacts(group_, shapes_, inertia_, settings_, t + tau, start, impact_contacts_, log);
     ++impacts;
     for (BodyId b : changed_) restart(b, tau, start, acceleration);
+    for (const Held& x : held_) start.set(x.body, x.state);
     std::erase_if(pending_, [this](const Pending& e) {
       return is_changed_[shapes_[e.pair.first].body] || is_changed_[shapes_[e.pair.second].body];
     });

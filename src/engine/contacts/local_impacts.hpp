@@ -62,7 +62,10 @@ class LocalImpacts {
   /// touching, or closing its gap within the step.
   bool engaged(const ContactSet& contacts, const Contact& c, const MotionState& s, double h) const;
   bool in_solver(std::uint32_t shape) const { return in_solver_[shapes_[shape].body] != 0; }
-  /// The state of body b at τ on its path, resolved at τ, and its path restarted there.
+  /// Moves body b in `start` to its state at τ on its path.
+  void move_to_impact(BodyId b, double tau, MotionState& start,
+                      const Accelerations& acceleration) const;
+  /// Body b's state in `start`, resolved at τ, replaced by the start of the path through it.
   void restart(BodyId b, double tau, MotionState& start, const Accelerations& acceleration) const;
   /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed;
   /// false when one of them could pass through a body of the contact solver.
@@ -83,7 +86,13 @@ class LocalImpacts {
   std::vector<WorldShape> here_;  // the changed shapes placed at the impact, in search order
   std::vector<char> is_changed_;
   ContactSet impact_contacts_;
-  MotionState at_impact_;
+  // The static and kinematic bodies of an impact, held aside while the impact is resolved in the
+  // step's start state.
+  struct Held {
+    BodyId body;
+    BodyState state;
+  };
+  std::vector<Held> held_;
 };
 
 }  // namespace gp

@@ -77,8 +77,7 @@ void ForceModel::evaluate(double t, const MotionState& s, Accelerations& out) co
       torque += dd::torque(Transform(Vec2::Zero(), s.angle[j]).rotate(f.arm), f.force);
     }
     if (f.callback) {
-      const Wrench w =
-          f.callback(t, j, {s.position[j], s.angle[j], s.velocity[j], s.angular_velocity[j]});
+      const Wrench w = f.callback(t, j, s.of(j));
       force += w.force;
       torque += w.torque;
     }
