@@ -94,7 +94,7 @@ void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, dou
 }
 
 void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
-                           const Accelerations& acceleration) const {
+                           const StepAccelerations& acceleration) const {
   // Under constant accelerations the path through the state just after the impact, followed
   // back by τ, starts where the body must start to pass through that state.
   const Ballistic back{start, acceleration};
@@ -104,7 +104,7 @@ void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
 }
 
 void LocalImpacts::move_to_impact(BodyId b, double tau, MotionState& start,
-                                  const Accelerations& acceleration) const {
+                                  const StepAccelerations& acceleration) const {
   const Ballistic motion{start, acceleration};
   const BodyState at{motion.position(b, tau), motion.angle(b, tau), motion.velocity(b, tau),
                      motion.angular_velocity(b, tau)};
@@ -112,7 +112,7 @@ void LocalImpacts::move_to_impact(BodyId b, double tau, MotionState& start,
 }
 
 bool LocalImpacts::resolve(double t, double h, MotionState& start,
-                           const Accelerations& acceleration, const WorldShapes& world_start,
+                           const StepAccelerations& acceleration, const WorldShapes& world_start,
                            WorldShapes& end, int& impacts, std::vector<Impact>& log) {
   if (pending_.empty()) return true;
   const Ballistic motion{start, acceleration};

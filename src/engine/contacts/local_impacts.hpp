@@ -46,7 +46,7 @@ class LocalImpacts {
   /// passes through its state just after the impact; its shapes' placement at the end of the
   /// step, in `end`, follows. Returns false, leaving the step to be sub-stepped, when a changed
   /// path could carry a body through one of the contact solver's bodies within the step.
-  bool resolve(double t, double h, MotionState& start, const Accelerations& acceleration,
+  bool resolve(double t, double h, MotionState& start, const StepAccelerations& acceleration,
                const WorldShapes& world_start, WorldShapes& end, int& impacts,
                std::vector<Impact>& log);
 
@@ -64,9 +64,10 @@ class LocalImpacts {
   bool in_solver(std::uint32_t shape) const { return in_solver_[shapes_[shape].body] != 0; }
   /// Moves body b in `start` to its state at τ on its path.
   void move_to_impact(BodyId b, double tau, MotionState& start,
-                      const Accelerations& acceleration) const;
+                      const StepAccelerations& acceleration) const;
   /// Body b's state in `start`, resolved at τ, replaced by the start of the path through it.
-  void restart(BodyId b, double tau, MotionState& start, const Accelerations& acceleration) const;
+  void restart(BodyId b, double tau, MotionState& start,
+               const StepAccelerations& acceleration) const;
   /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed;
   /// false when one of them could pass through a body of the contact solver.
   bool search_after(std::span<const BodyId> changed, double tau, double h, const Ballistic& motion,

@@ -41,17 +41,24 @@ const Accelerations& evaluated(const ForceModel& forces, double t, const MotionS
   return out;
 }
 
+// The accelerations of the dynamic bodies at time t in state s: constant forces give them without
+// an evaluation stored per body; others are evaluated into `out`.
+StepAccelerations at_start(const ForceModel& forces, double t, const MotionState& s,
+                           Accelerations& out) {
+  return forces.constant() ? StepAccelerations(forces)
+                           : StepAccelerations(evaluated(forces, t, s, out));
+}
+
 /// Semi-implicit (symplectic) Euler: v₁ = v₀ + a(x₀) h, x₁ = x₀ + v₁ h. First order.
 class SymplecticEuler final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s,
-               const Accelerations* start_acceleration) override {
-    const Accelerations& a = start_acceleration ? *start_acceleration : evaluated(forces, t, s, a_);
+  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
+    const StepAccelerations a = at_start(forces, t, s, a_);
     const auto& ids = forces.bodies();
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
       const bool rotates = forces.rotates()[k];
-      accelerate(s, j, rotates, a.linear[j], a.angular[j], h);
+      accelerate(s, j, rotates, a.linear(j), a.angular(j), h);
       move(s, j, rotates, s.velocity[j], s.angular_velocity[j], h);
     }
   }
@@ -66,28 +73,26 @@ class SymplecticEuler final : public Integrator {
 /// exact when the acceleration is constant.
 class VelocityVerlet final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s,
-               const Accelerations* start_acceleration) override {
-    const Accelerations& a0 =
-        start_acceleration ? *start_acceleration : evaluated(forces, t, s, a0_);
+  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
+    const StepAccelerations a0 = at_start(forces, t, s, a0_);
     const auto& ids = forces.bodies();
     const auto& rotates = forces.rotates();
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
-      move(s, j, rotates[k], s.velocity[j] + 0.5 * h * a0.linear[j],
-           s.angular_velocity[j] + 0.5 * h * a0.angular[j], h);
+      move(s, j, rotates[k], s.velocity[j] + 0.5 * h * a0.linear(j),
+           s.angular_velocity[j] + 0.5 * h * a0.angular(j), h);
     }
     // Forces that depend on velocity see the velocity predicted at the end of the step.
     for (std::size_t k = 0; k < ids.size(); ++k) {
-      accelerate(s, ids[k], rotates[k], a0.linear[ids[k]], a0.angular[ids[k]], h);
+      accelerate(s, ids[k], rotates[k], a0.linear(ids[k]), a0.angular(ids[k]), h);
     }
     if (forces.constant()) return;
     // Sized here: constant forces, the common case, never need the end's accelerations.
     evaluated(forces, t + h, s, a1_);
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
-      accelerate(s, j, rotates[k], 0.5 * (a1_.linear[j] - a0.linear[j]),
-                 0.5 * (a1_.angular[j] - a0.angular[j]), h);
+      accelerate(s, j, rotates[k], 0.5 * (a1_.linear[j] - a0.linear(j)),
+                 0.5 * (a1_.angular[j] - a0.angular(j)), h);
     }
   }
   double impulse_position_share() const override { return 0.5; }
@@ -101,8 +106,7 @@ class VelocityVerlet final : public Integrator {
 class RungeKutta4 final : public Integrator {
  public:
   // Evaluates its first stage itself: the stages keep their accelerations together.
-  void advance(const ForceModel& forces, double t, double h, MotionState& s,
-               const Accelerations*) override {
+  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
     const std::size_t n = s.position.size();
     stage_state_ = s;
     const auto& ids = forces.bodies();
