@@ -60,6 +60,22 @@ class ForceModel {
     const Pushed* p = pushed(body);
     return p ? p->angular : 0.0;
   }
+  /// Under constant forces, calls visit(k, j, a, α) for each dynamic body, entry k of bodies()
+  /// and id j, with its linear and angular accelerations, in order: one pass over the bodies
+  /// without a look-up for each.
+  template <typename Visit>
+  void for_each_constant_acceleration(Visit visit) const {
+    auto pushed = pushed_.begin();
+    for (std::size_t k = 0; k < ids_.size(); ++k) {
+      const BodyId j = ids_[k];
+      if (pushed != pushed_.end() && pushed->body == j) {
+        visit(k, j, pushed->linear, pushed->angular);
+        ++pushed;
+      } else {
+        visit(k, j, falling_, 0.0);
+      }
+    }
+  }
   /// The dynamic bodies, in increasing id order.
   const std::vector<BodyId>& bodies() const { return ids_; }
   /// Per entry of bodies(): whether the body can rotate (it has a moment of inertia). The
@@ -101,28 +117,24 @@ class ForceModel {
   std::vector<Pushed> pushed_;
 };
 
-/// The accelerations of the bodies at the start of a step, which the ballistic paths and the
-/// integrators follow: under constant forces the ForceModel's, so that nothing is stored per body,
-/// else evaluated per body. Bodies that are not dynamic have none.
+/// The accelerations of the bodies at the start of a step, which the ballistic paths follow: under
+/// constant forces the ForceModel's, so that nothing is stored per body, else evaluated per body.
+/// Bodies that are not dynamic have none.
 class StepAccelerations {
  public:
   /// Under constant forces, for the bodies flagged in `dynamic`, indexed by body id.
   StepAccelerations(const ForceModel& forces, const std::vector<char>& dynamic)
       : forces_(&forces), dynamic_(&dynamic) {}
-  /// Under constant forces, asked for dynamic bodies only.
-  explicit StepAccelerations(const ForceModel& forces) : forces_(&forces) {}
   /// Evaluated per body.
   explicit StepAccelerations(const Accelerations& evaluated) : evaluated_(&evaluated) {}
 
   Vec2 linear(BodyId body) const {
     if (evaluated_) return evaluated_->linear[body];
-    if (dynamic_ && !(*dynamic_)[body]) return Vec2::Zero();
-    return forces_->constant_linear_acceleration(body);
+    return (*dynamic_)[body] ? forces_->constant_linear_acceleration(body) : Vec2::Zero();
   }
   double angular(BodyId body) const {
     if (evaluated_) return evaluated_->angular[body];
-    if (dynamic_ && !(*dynamic_)[body]) return 0.0;
-    return forces_->constant_angular_acceleration(body);
+    return (*dynamic_)[body] ? forces_->constant_angular_acceleration(body) : 0.0;
   }
 
  private:
