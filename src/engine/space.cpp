@@ -81,8 +81,7 @@ double Space::moment(BodyId body) const {
 }
 
 BodyState Space::state(BodyId body) const {
-  return {state_.position[body], state_.angle[body], state_.velocity[body],
-          state_.angular_velocity[body]};
+  return state_.of(body);
 }
 
 void Space::step(double dt) {
@@ -127,9 +126,10 @@ const std::vector<ProxyPair>& Space::sweep(double h, const Ballistic& motion) {
 }
 
 Ballistic Space::start_motion() {
-  start_acceleration_.resize(state_.position.size());
-  forces_.evaluate(time_, start_, start_acceleration_);
-  return {start_, start_acceleration_};
+  if (forces_.constant()) return {start_, StepAccelerations(forces_, dynamic_)};
+  varying_acceleration_.resize(state_.position.size());
+  forces_.evaluate(time_, start_, varying_acceleration_);
+  return {start_, StepAccelerations(varying_acceleration_)};
 }
 
 double Space::warm_start_scale(double h) const {
@@ -148,7 +148,7 @@ bool Space::local_step(double h) {
   local_impacts_.classify(pairs, world_start_, world_end_, motion, h,
                           impacts_this_step_ < settings_.max_impacts_per_step, contacts_);
   local_impacts_.hand_over(world_start_, start_, h, contacts_, speculative_contacts_);
-  if (!local_impacts_.resolve(time_, h, start_, start_acceleration_, world_start_, world_end_,
+  if (!local_impacts_.resolve(time_, h, start_, motion.acceleration, world_start_, world_end_,
                               impacts_this_step_, impacts_)) {
     return false;
   }
@@ -195,9 +195,7 @@ void Space::advance(double h) {
     start_.velocity = state_.velocity;
     start_.angular_velocity = state_.angular_velocity;
   }
-  // Under constant forces the accelerations the step started with are the integrator's too.
-  const bool known = collides_ && forces_.constant();
-  integrator_->advance(forces_, time_, h, state_, known ? &start_acceleration_ : nullptr);
+  integrator_->advance(forces_, time_, h, state_);
   move_kinematic(h);
   if (!contacts_.empty()) {
     prepare_contacts(contacts_, shapes_, inertia_, start_, h, settings_);

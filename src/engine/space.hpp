@@ -77,7 +77,8 @@ class Space {
   /// Advances by h in one piece, resolving impacts for their own bodies only (LocalImpacts);
   /// false, having changed nothing, when the step must be sub-stepped instead.
   bool local_step(double h);
-  /// The ballistic motion from start_ under the accelerations at the start of the step.
+  /// The ballistic motion from start_ under the accelerations at the start of the step: under
+  /// constant forces the ForceModel's, else evaluated into varying_acceleration_.
   Ballistic start_motion();
   /// The factor the previous step's impulses carry over with into a step of h [s].
   double warm_start_scale(double h) const;
@@ -111,7 +112,7 @@ class Space {
   double previous_h_ = 0.0;
   // Scratch kept between steps so that a step does not allocate once the scene is warmed up.
   MotionState start_;
-  Accelerations start_acceleration_;
+  Accelerations varying_acceleration_;  // at the start, when the forces are not constant
   WorldShapes world_start_, world_end_;
   ContactSet contacts_, impact_scratch_;
   std::vector<WarmStart> warm_starts_;  // the impulses of the last sub-step's contacts

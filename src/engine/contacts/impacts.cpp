@@ -32,12 +32,12 @@ double Ballistic::angle(BodyId body, double tau) const {
 
 Vec2 Ballistic::velocity(BodyId body, double tau) const {
   return start.velocity[body] +
-         dd::velocity_change_from_acceleration(acceleration.linear[body], tau);
+         dd::velocity_change_from_acceleration(acceleration.linear(body), tau);
 }
 
 double Ballistic::angular_velocity(BodyId body, double tau) const {
   return start.angular_velocity[body] +
-         dd::angular_velocity_change_from_acceleration(acceleration.angular[body], tau);
+         dd::angular_velocity_change_from_acceleration(acceleration.angular(body), tau);
 }
 
 double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Ballistic& m,
@@ -46,11 +46,11 @@ double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Bal
   // turning for each body on its own.
   const auto turning = [&m, h](const ShapeRecord& r) {
     return (std::abs(m.start.angular_velocity[r.body]) +
-            std::abs(m.acceleration.angular[r.body]) * h) *
+            std::abs(m.acceleration.angular(r.body)) * h) *
            reach(r.local);
   };
   return (m.start.velocity[a.body] - m.start.velocity[b.body]).norm() +
-         (m.acceleration.linear[a.body] - m.acceleration.linear[b.body]).norm() * h + turning(a) +
+         (m.acceleration.linear(a.body) - m.acceleration.linear(b.body)).norm() * h + turning(a) +
          turning(b);
 }
 

@@ -10,6 +10,7 @@
 #include "engine/collision/broadphase.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/contact_solver.hpp"
+#include "engine/dynamics/force_model.hpp"
 
 namespace gp {
 
@@ -27,7 +28,7 @@ struct Impact {
 /// constant accelerations, and what the time-of-impact search follows.
 struct Ballistic {
   const MotionState& start;
-  const Accelerations& acceleration;
+  StepAccelerations acceleration;
 
   /// Transform of `body` after τ [s].
   Vec2 position(BodyId body, double tau) const;

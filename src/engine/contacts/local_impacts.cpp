@@ -53,9 +53,9 @@ bool LocalImpacts::engaged(const ContactSet& contacts, const Contact& c, const M
 
 void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, double h,
                              ContactSet& contacts, ContactSet& speculative) {
-  in_solver_.assign(dynamic_.size(), 0);
+  marks_.assign(dynamic_.size(), 0);
   const auto join = [this](BodyId b) {
-    if (dynamic_[b]) in_solver_[b] = 1;
+    if (dynamic_[b]) marks_[b] |= kInSolver;
   };
   for (const Contact& c : contacts) {
     if (!engaged(contacts, c, s, h)) continue;
@@ -81,41 +81,40 @@ void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, dou
   // The bodies left with impacts are the exact path's alone: a contact of theirs that is not
   // engaged (apart, not closing within the step) is searched for impacts after theirs instead.
   if (!pending_.empty()) {
-    with_impact_.assign(dynamic_.size(), 0);
     for (const Pending& e : pending_) {
-      with_impact_[shapes_[e.pair.first].body] = 1;
-      with_impact_[shapes_[e.pair.second].body] = 1;
+      marks_[shapes_[e.pair.first].body] |= kWithImpact;
+      marks_[shapes_[e.pair.second].body] |= kWithImpact;
     }
     contacts.erase_if([this](const Contact& c) {
-      return (dynamic_[c.body_a] && with_impact_[c.body_a]) ||
-             (dynamic_[c.body_b] && with_impact_[c.body_b]);
+      return (dynamic_[c.body_a] && (marks_[c.body_a] & kWithImpact)) ||
+             (dynamic_[c.body_b] && (marks_[c.body_b] & kWithImpact));
     });
   }
 }
 
 void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
-                           const Accelerations& acceleration) const {
+                           const StepAccelerations& acceleration) const {
   // Under constant accelerations the path through the state just after the impact, followed
   // back by τ, starts where the body must start to pass through that state.
-  const Ballistic back{at_impact_, acceleration};
-  start.position[b] = back.position(b, -tau);
-  start.angle[b] = back.angle(b, -tau);
-  start.velocity[b] = back.velocity(b, -tau);
-  start.angular_velocity[b] = back.angular_velocity(b, -tau);
+  const Ballistic back{start, acceleration};
+  const BodyState from{back.position(b, -tau), back.angle(b, -tau), back.velocity(b, -tau),
+                       back.angular_velocity(b, -tau)};
+  start.set(b, from);
+}
+
+void LocalImpacts::move_to_impact(BodyId b, double tau, MotionState& start,
+                                  const StepAccelerations& acceleration) const {
+  const Ballistic motion{start, acceleration};
+  const BodyState at{motion.position(b, tau), motion.angle(b, tau), motion.velocity(b, tau),
+                     motion.angular_velocity(b, tau)};
+  start.set(b, at);
 }
 
 bool LocalImpacts::resolve(double t, double h, MotionState& start,
-                           const Accelerations& acceleration, const WorldShapes& world_start,
+                           const StepAccelerations& acceleration, WorldShapes& world_start,
                            WorldShapes& end, int& impacts, std::vector<Impact>& log) {
   if (pending_.empty()) return true;
   const Ballistic motion{start, acceleration};
-  const double half_margin = 0.5 * settings_.contact_margin;
-  swept_.resize(shapes_.size());
-  for (std::size_t i = 0; i < shapes_.size(); ++i) {
-    swept_[i] = world_start[i].bounds.united(end[i].bounds).fattened(half_margin);
-  }
-  at_impact_.resize(start.position.size());
-  is_changed_.assign(start.position.size(), 0);
   const double same_time = simultaneity(h);
   while (!pending_.empty() && impacts < settings_.max_impacts_per_step) {
     const double tau =
@@ -124,63 +123,71 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
         })->time;
     group_.clear();
     changed_.clear();
+    held_.clear();
+    // The group's bodies are moved to the impact in `start` itself, which is the step's scratch:
+    // only the static and kinematic ones, whose paths the impact does not change, are held aside
+    // to be put back after it.
     for (const Pending& e : pending_) {
       if (e.time > tau + same_time) continue;
       group_.push_back(e.pair);
       for (std::uint32_t shape : {e.pair.first, e.pair.second}) {
         const BodyId b = shapes_[shape].body;
-        at_impact_.position[b] = motion.position(b, tau);
-        at_impact_.angle[b] = motion.angle(b, tau);
-        at_impact_.velocity[b] = motion.velocity(b, tau);
-        at_impact_.angular_velocity[b] = motion.angular_velocity(b, tau);
-        if (dynamic_[b] && !is_changed_[b]) {
-          is_changed_[b] = 1;
+        if (dynamic_[b]) {
+          if (marks_[b] & kChanged) continue;
+          marks_[b] |= kChanged;
           changed_.push_back(b);
+        } else {
+          if (std::any_of(held_.begin(), held_.end(), [b](const Held& x) { return x.body == b; }))
+            continue;
+          held_.push_back({b, start.of(b)});
         }
+        move_to_impact(b, tau, start, acceleration);
       }
     }
     std::sort(group_.begin(), group_.end());
-    resolve_impacts(group_, shapes_, inertia_, settings_, t + tau, at_impact_, impact_contacts_,
-                    log);
+    resolve_impacts(group_, shapes_, inertia_, settings_, t + tau, start, impact_contacts_, log);
     ++impacts;
     for (BodyId b : changed_) restart(b, tau, start, acceleration);
+    for (const Held& x : held_) start.set(x.body, x.state);
     std::erase_if(pending_, [this](const Pending& e) {
-      return is_changed_[shapes_[e.pair.first].body] || is_changed_[shapes_[e.pair.second].body];
+      return changed(shapes_[e.pair.first]) || changed(shapes_[e.pair.second]);
     });
-    if (!search_after(changed_, tau, h, motion, end)) return false;
-    for (BodyId b : changed_) is_changed_[b] = 0;
+    if (!search_after(changed_, tau, h, motion, world_start, end)) return false;
+    for (BodyId b : changed_) marks_[b] &= ~kChanged;
   }
   return true;
 }
 
 bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, double h,
-                                const Ballistic& motion, WorldShapes& end) {
+                                const Ballistic& motion, WorldShapes& rest_start,
+                                WorldShapes& end) {
   const auto frame_at = [&](std::uint32_t i, double when) {
     const BodyId b = shapes_[i].body;
     return Transform(motion.position(b, when), motion.angle(b, when));
   };
-  const auto placed_at = [&](std::uint32_t i, double when) {
-    return to_world(shapes_[i].local, frame_at(i, when));
-  };
-  const double half_margin = 0.5 * settings_.contact_margin;
-  // First every changed shape's new box, so that two changed shapes see each other's.
-  here_.clear();
+  // First every changed shape placed where the rest of its path starts and ends, so that two
+  // changed shapes see each other's.
   for (BodyId b : changed) {
     for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
       end.place(i, shapes_[i].local, frame_at(i, h));
-      here_.push_back(placed_at(i, tau));
-      swept_[i] = here_.back().bounds.united(end[i].bounds).fattened(half_margin);
+      rest_start.place(i, shapes_[i].local, frame_at(i, tau));
     }
   }
+  const double half_margin = 0.5 * settings_.contact_margin;
+  // The box of a shape over the rest of its path, + margin / 2.
+  const auto swept = [&](std::uint32_t i) {
+    return rest_start.bounds(i).united(end.bounds(i)).fattened(half_margin);
+  };
   const ImpactFilter f = impact_filter(settings_);
-  auto here = here_.begin();
   for (BodyId b : changed) {
-    for (auto [i, last] = shapes_.of_body(b); i < last; ++i, ++here) {
+    for (auto [i, last] = shapes_.of_body(b); i < last; ++i) {
+      const Aabb box = swept(i);
+      const WorldShapeView here = rest_start[i];
       for (std::uint32_t k = 0; k < shapes_.size(); ++k) {
         const BodyId other = shapes_[k].body;
-        if (other == b || !swept_[i].overlaps(swept_[k])) continue;
+        if (other == b || !box.overlaps(swept(k))) continue;
         // A pair of two changed bodies is searched once, from the one with the lower id.
-        if (is_changed_[other] && other < b) continue;
+        if ((marks_[other] & kChanged) && other < b) continue;
         if (in_solver(k)) {
           // Its path is the solver's, not known here: safe to leave to the next step only if
           // neither can have moved through the other by then.
@@ -192,8 +199,9 @@ bool LocalImpacts::search_after(std::span<const BodyId> changed, double tau, dou
           }
           continue;
         }
-        const auto when = impact_time(shapes_[i], shapes_[k], *here, placed_at(k, tau), end[i],
-                                      end[k], motion, tau, h, f);
+        const auto when =
+            impact_time(shapes_[i], shapes_[k], here, to_world(shapes_[k].local, frame_at(k, tau)),
+                        end[i], end[k], motion, tau, h, f);
         if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
       }
     }

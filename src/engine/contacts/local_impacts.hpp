@@ -40,15 +40,15 @@ class LocalImpacts {
   void hand_over(const WorldShapes& start, const MotionState& s, double h, ContactSet& contacts,
                  ContactSet& speculative);
 
-  /// Resolves the remaining impacts in time order, each at its t_c = t + τ, and logs them in
-  /// `log` (at most `max_impacts` - `impacts` of them; `impacts` counts them). Each body an
-  /// impact changes gets, in `start`, the state from which its ballistic path over the step
-  /// passes through its state just after the impact; its shapes' placement at the end of the
-  /// step, in `end`, follows. Returns false, leaving the step to be sub-stepped, when a changed
-  /// path could carry a body through one of the contact solver's bodies within the step.
-  bool resolve(double t, double h, MotionState& start, const Accelerations& acceleration,
-               const WorldShapes& world_start, WorldShapes& end, int& impacts,
-               std::vector<Impact>& log);
+  /// After hand_over(), resolves the remaining impacts in time order, each at its t_c = t + τ,
+  /// and logs them in `log` (at most `max_impacts` - `impacts` of them; `impacts` counts them).
+  /// Each body an impact changes gets, in `start`, the state from which its ballistic path over
+  /// the step passes through its state just after the impact; its shapes' placements follow: in
+  /// `world_start` where the rest of the path starts (at the impact), in `end` where it ends.
+  /// Returns false, leaving the step to be sub-stepped, when a changed path could carry a body
+  /// through one of the contact solver's bodies within the step.
+  bool resolve(double t, double h, MotionState& start, const StepAccelerations& acceleration,
+               WorldShapes& world_start, WorldShapes& end, int& impacts, std::vector<Impact>& log);
 
  private:
   struct Pending {
@@ -61,29 +61,43 @@ class LocalImpacts {
   /// Whether contact `c` (of `contacts`) can push during a step of h [s] from state `s`: a point
   /// touching, or closing its gap within the step.
   bool engaged(const ContactSet& contacts, const Contact& c, const MotionState& s, double h) const;
-  bool in_solver(std::uint32_t shape) const { return in_solver_[shapes_[shape].body] != 0; }
-  /// The state of body b at τ on its path, resolved at τ, and its path restarted there.
-  void restart(BodyId b, double tau, MotionState& start, const Accelerations& acceleration) const;
-  /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed;
-  /// false when one of them could pass through a body of the contact solver.
+  bool in_solver(std::uint32_t shape) const { return marks_[shapes_[shape].body] & kInSolver; }
+  bool changed(const ShapeRecord& shape) const { return marks_[shape.body] & kChanged; }
+  /// Moves body b in `start` to its state at τ on its path.
+  void move_to_impact(BodyId b, double tau, MotionState& start,
+                      const StepAccelerations& acceleration) const;
+  /// Body b's state in `start`, resolved at τ, replaced by the start of the path through it.
+  void restart(BodyId b, double tau, MotionState& start,
+               const StepAccelerations& acceleration) const;
+  /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed,
+  /// having placed them at τ in `rest_start` and at h in `end`; false when one of them could pass
+  /// through a body of the contact solver.
   bool search_after(std::span<const BodyId> changed, double tau, double h, const Ballistic& motion,
-                    WorldShapes& end);
+                    WorldShapes& rest_start, WorldShapes& end);
 
   const BodyShapes& shapes_;
   const BodyInertia& inertia_;
   const std::vector<char>& dynamic_;
   const Settings& settings_;
   std::vector<Pending> pending_;
-  std::vector<char> in_solver_;    // per body: dynamic and in a contact of the solver this step
-  std::vector<char> with_impact_;  // per body: in a pending impact after hand_over()
-  std::vector<Aabb> swept_;        // per shape: its box over the rest of its path, + margin / 2
+  // What hand_over() and resolve() learn of each body, one byte of these bits per body.
+  enum Mark : std::uint8_t {
+    kInSolver = 1,    // dynamic and in a contact of the solver this step
+    kWithImpact = 2,  // in a pending impact after hand_over()
+    kChanged = 4,     // dynamic and in the impact being resolved
+  };
+  std::vector<std::uint8_t> marks_;
   // Scratch kept between steps so that impacts allocate nothing once the scene is warmed up.
   std::vector<ProxyPair> group_;
   std::vector<BodyId> changed_;
-  std::vector<WorldShape> here_;  // the changed shapes placed at the impact, in search order
-  std::vector<char> is_changed_;
   ContactSet impact_contacts_;
-  MotionState at_impact_;
+  // The static and kinematic bodies of an impact, held aside while the impact is resolved in the
+  // step's start state.
+  struct Held {
+    BodyId body;
+    BodyState state;
+  };
+  std::vector<Held> held_;
 };
 
 }  // namespace gp

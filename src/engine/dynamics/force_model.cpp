@@ -11,6 +11,12 @@
 
 namespace gp {
 
+ForceModel::ForceModel(const Settings& settings)
+    : gravity_(settings.gravity),
+      // No force: the same for every mass.
+      falling_(im::translational_acceleration(settings.gravity, Vec2::Zero(), 1.0)),
+      G_(settings.G) {}
+
 bool ForceModel::beyond_gravity(const BodyForces& forces) {
   return forces.force != Vec2::Zero() || forces.torque != 0.0 || forces.force_at_point ||
          forces.callback;
@@ -21,7 +27,13 @@ void ForceModel::add(BodyId id, BodyForces forces) {
   append(ids_, id);
   append(masses_, forces.mass);
   append(rotates_, forces.inverse_moment > 0.0);
-  if (beyond_gravity(forces)) applied_.push_back({entry, std::move(forces)});
+  if (!beyond_gravity(forces)) return;
+  // As evaluate() has them when the forces are constant.
+  pushed_.push_back({id, im::translational_acceleration(gravity_, forces.force, forces.mass),
+                     rotates_.back()
+                         ? im::angular_acceleration(forces.torque, 1.0 / forces.inverse_moment)
+                         : 0.0});
+  applied_.push_back({entry, std::move(forces)});
 }
 
 void ForceModel::set_callback(BodyId id, double inverse_moment, ForceCallback callback) {
@@ -77,8 +89,7 @@ void ForceModel::evaluate(double t, const MotionState& s, Accelerations& out) co
       torque += dd::torque(Transform(Vec2::Zero(), s.angle[j]).rotate(f.arm), f.force);
     }
     if (f.callback) {
-      const Wrench w =
-          f.callback(t, j, {s.position[j], s.angle[j], s.velocity[j], s.angular_velocity[j]});
+      const Wrench w = f.callback(t, j, s.of(j));
       force += w.force;
       torque += w.torque;
     }

@@ -3,6 +3,7 @@
 // gravitation (TM:UniversalGravLaw, GD:accelGravity), applied forces and torques, forces applied
 // at a point (DD:torque) and time-dependent forces, through IM:transMot and IM:rotMot.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -33,7 +34,7 @@ struct BodyForces {
 
 class ForceModel {
  public:
-  explicit ForceModel(const Settings& settings) : gravity_(settings.gravity), G_(settings.G) {}
+  explicit ForceModel(const Settings& settings);
 
   /// Registers a dynamic body (ids must be added in increasing order).
   void add(BodyId id, BodyForces forces);
@@ -49,6 +50,32 @@ class ForceModel {
   bool constant() const;
   bool pairwise_gravitation() const { return G_.has_value(); }
   bool any_applied() const;
+  /// Under constant forces (constant()), the accelerations of dynamic body `body`, the same for
+  /// every body of gravity only: none needs one stored.
+  Vec2 constant_linear_acceleration(BodyId body) const {
+    const Pushed* p = pushed(body);
+    return p ? p->linear : falling_;
+  }
+  double constant_angular_acceleration(BodyId body) const {
+    const Pushed* p = pushed(body);
+    return p ? p->angular : 0.0;
+  }
+  /// Under constant forces, calls visit(k, j, a, α) for each dynamic body, entry k of bodies()
+  /// and id j, with its linear and angular accelerations, in order: one pass over the bodies
+  /// without a look-up for each.
+  template <typename Visit>
+  void for_each_constant_acceleration(Visit visit) const {
+    auto pushed = pushed_.begin();
+    for (std::size_t k = 0; k < ids_.size(); ++k) {
+      const BodyId j = ids_[k];
+      if (pushed != pushed_.end() && pushed->body == j) {
+        visit(k, j, pushed->linear, pushed->angular);
+        ++pushed;
+      } else {
+        visit(k, j, falling_, 0.0);
+      }
+    }
+  }
   /// The dynamic bodies, in increasing id order.
   const std::vector<BodyId>& bodies() const { return ids_; }
   /// Per entry of bodies(): whether the body can rotate (it has a moment of inertia). The
@@ -61,16 +88,59 @@ class ForceModel {
     std::uint32_t entry;
     BodyForces forces;
   };
+  /// The accelerations of a body pushed beyond gravity by constant forces.
+  struct Pushed {
+    BodyId body;
+    Vec2 linear;     ///< m/s²
+    double angular;  ///< rad/s²
+  };
   /// Whether `forces` push the body beyond gravity, so that it needs an Applied.
   static bool beyond_gravity(const BodyForces& forces);
+  /// The Pushed of `body`, null for a body of gravity only.
+  const Pushed* pushed(BodyId body) const {
+    if (pushed_.empty()) return nullptr;  // the common case: gravity alone
+    const auto it = std::lower_bound(pushed_.begin(), pushed_.end(), body,
+                                     [](const Pushed& p, BodyId b) { return p.body < b; });
+    return it != pushed_.end() && it->body == body ? &*it : nullptr;
+  }
 
   Vec2 gravity_;
+  Vec2 falling_;  // m/s²: the acceleration of a body of gravity only
   std::optional<double> G_;
   std::vector<BodyId> ids_;
   std::vector<double> masses_;  // per entry of bodies()
   std::vector<char> rotates_;
   // Most bodies of a game feel gravity only: only the others keep their forces, by entry.
   std::vector<Applied> applied_;
+  // Their accelerations under constant forces, by body id; meaningless, and unread, for forces
+  // applied at a point or given by a callback, which are not constant.
+  std::vector<Pushed> pushed_;
+};
+
+/// The accelerations of the bodies at the start of a step, which the ballistic paths follow: under
+/// constant forces the ForceModel's, so that nothing is stored per body, else evaluated per body.
+/// Bodies that are not dynamic have none.
+class StepAccelerations {
+ public:
+  /// Under constant forces, for the bodies flagged in `dynamic`, indexed by body id.
+  StepAccelerations(const ForceModel& forces, const std::vector<char>& dynamic)
+      : forces_(&forces), dynamic_(&dynamic) {}
+  /// Evaluated per body.
+  explicit StepAccelerations(const Accelerations& evaluated) : evaluated_(&evaluated) {}
+
+  Vec2 linear(BodyId body) const {
+    if (evaluated_) return evaluated_->linear[body];
+    return (*dynamic_)[body] ? forces_->constant_linear_acceleration(body) : Vec2::Zero();
+  }
+  double angular(BodyId body) const {
+    if (evaluated_) return evaluated_->angular[body];
+    return (*dynamic_)[body] ? forces_->constant_angular_acceleration(body) : 0.0;
+  }
+
+ private:
+  const ForceModel* forces_ = nullptr;
+  const std::vector<char>* dynamic_ = nullptr;
+  const Accelerations* evaluated_ = nullptr;
 };
 
 }  // namespace gp

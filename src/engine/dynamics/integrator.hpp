@@ -15,11 +15,8 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
 
-  /// Advances the bodies of `forces` in `s` from time t by h [s]. `start_acceleration`: the
-  /// accelerations at t in `s` when the caller has them already, else null; an integrator that
-  /// takes them does not evaluate (nor store) them again.
-  virtual void advance(const ForceModel& forces, double t, double h, MotionState& s,
-                       const Accelerations* start_acceleration) = 0;
+  /// Advances the bodies of `forces` in `s` from time t by h [s].
+  virtual void advance(const ForceModel& forces, double t, double h, MotionState& s) = 0;
 
   /// How much of a velocity change Δv made by contact impulses during a step moves the body in
   /// that step, as a fraction of Δv·h: 1 when the position update uses the end velocity

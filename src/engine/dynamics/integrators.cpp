@@ -41,19 +41,31 @@ const Accelerations& evaluated(const ForceModel& forces, double t, const MotionS
   return out;
 }
 
+// Calls step(k, j, a, α) for each dynamic body, entry k of forces.bodies() and id j, with its
+// accelerations at time t in state s: under constant forces the ForceModel's, with nothing stored
+// per body, else evaluated into `out`.
+template <typename Step>
+void for_each_body(const ForceModel& forces, double t, const MotionState& s, Accelerations& out,
+                   Step step) {
+  if (forces.constant()) {
+    forces.for_each_constant_acceleration(step);
+    return;
+  }
+  evaluated(forces, t, s, out);
+  const auto& ids = forces.bodies();
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    step(k, ids[k], out.linear[ids[k]], out.angular[ids[k]]);
+}
+
 /// Semi-implicit (symplectic) Euler: v₁ = v₀ + a(x₀) h, x₁ = x₀ + v₁ h. First order.
 class SymplecticEuler final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s,
-               const Accelerations* start_acceleration) override {
-    const Accelerations& a = start_acceleration ? *start_acceleration : evaluated(forces, t, s, a_);
-    const auto& ids = forces.bodies();
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      const BodyId j = ids[k];
-      const bool rotates = forces.rotates()[k];
-      accelerate(s, j, rotates, a.linear[j], a.angular[j], h);
-      move(s, j, rotates, s.velocity[j], s.angular_velocity[j], h);
-    }
+  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
+    const auto& rotates = forces.rotates();
+    for_each_body(forces, t, s, a_, [&](std::size_t k, BodyId j, const Vec2& a, double alpha) {
+      accelerate(s, j, rotates[k], a, alpha, h);
+      move(s, j, rotates[k], s.velocity[j], s.angular_velocity[j], h);
+    });
   }
   double impulse_position_share() const override { return 1.0; }
   bool exact_for_constant_acceleration() const override { return false; }
@@ -66,28 +78,24 @@ class SymplecticEuler final : public Integrator {
 /// exact when the acceleration is constant.
 class VelocityVerlet final : public Integrator {
  public:
-  void advance(const ForceModel& forces, double t, double h, MotionState& s,
-               const Accelerations* start_acceleration) override {
-    const Accelerations& a0 =
-        start_acceleration ? *start_acceleration : evaluated(forces, t, s, a0_);
-    const auto& ids = forces.bodies();
+  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
     const auto& rotates = forces.rotates();
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      const BodyId j = ids[k];
-      move(s, j, rotates[k], s.velocity[j] + 0.5 * h * a0.linear[j],
-           s.angular_velocity[j] + 0.5 * h * a0.angular[j], h);
-    }
-    // Forces that depend on velocity see the velocity predicted at the end of the step.
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      accelerate(s, ids[k], rotates[k], a0.linear[ids[k]], a0.angular[ids[k]], h);
-    }
+    // A body's move and its velocity's change by a₀ h depend on that body alone: one pass.
+    const auto first_order = [&](std::size_t k, BodyId j, const Vec2& a, double alpha) {
+      move(s, j, rotates[k], s.velocity[j] + 0.5 * h * a, s.angular_velocity[j] + 0.5 * h * alpha,
+           h);
+      accelerate(s, j, rotates[k], a, alpha, h);
+    };
+    for_each_body(forces, t, s, a0_, first_order);
     if (forces.constant()) return;
-    // Sized here: constant forces, the common case, never need the end's accelerations.
+    const auto& ids = forces.bodies();
+    // Forces that depend on velocity see the velocity predicted at the end of the step. Sized
+    // here: constant forces, the common case, never need the end's accelerations.
     evaluated(forces, t + h, s, a1_);
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const BodyId j = ids[k];
-      accelerate(s, j, rotates[k], 0.5 * (a1_.linear[j] - a0.linear[j]),
-                 0.5 * (a1_.angular[j] - a0.angular[j]), h);
+      accelerate(s, j, rotates[k], 0.5 * (a1_.linear[j] - a0_.linear[j]),
+                 0.5 * (a1_.angular[j] - a0_.angular[j]), h);
     }
   }
   double impulse_position_share() const override { return 0.5; }
@@ -101,8 +109,7 @@ class VelocityVerlet final : public Integrator {
 class RungeKutta4 final : public Integrator {
  public:
   // Evaluates its first stage itself: the stages keep their accelerations together.
-  void advance(const ForceModel& forces, double t, double h, MotionState& s,
-               const Accelerations*) override {
+  void advance(const ForceModel& forces, double t, double h, MotionState& s) override {
     const std::size_t n = s.position.size();
     stage_state_ = s;
     const auto& ids = forces.bodies();

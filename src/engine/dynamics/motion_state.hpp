@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "engine/body.hpp"
 #include "gamephysics/models/types.hpp"
 
 namespace gp {
@@ -15,6 +16,17 @@ struct MotionState {
   std::vector<double> angle;             ///< rad, in [0, 2π)
   std::vector<Vec2> velocity;            ///< m/s
   std::vector<double> angular_velocity;  ///< rad/s
+
+  /// The state of body `b`, read or written whole.
+  BodyState of(std::size_t b) const {
+    return {position[b], angle[b], velocity[b], angular_velocity[b]};
+  }
+  void set(std::size_t b, const BodyState& state) {
+    position[b] = state.position;
+    angle[b] = state.angle;
+    velocity[b] = state.velocity;
+    angular_velocity[b] = state.angular_velocity;
+  }
 
   void resize(std::size_t n) {
     position.resize(n, Vec2::Zero());
