@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "engine/contacts/collision_detection.hpp"
 #include "engine/contacts/contact_solver.hpp"
 #include "engine/geometry/transform.hpp"
 
@@ -137,17 +138,15 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
   s.resize(2);
   s.position[1] = {0.0, -arm.y() - depth};  // the deepest point `depth` under the ground
   const std::vector<double> detected_angle = s.angle;
-  gp::ContactSet contacts;
-  gp::Contact& c = contacts.append(1);
-  c.shape_a = 1;
-  c.body_a = 1;
-  c.normal = {0.0, 1.0};
-  gp::ContactPointState& p = contacts.points(c)[0];
-  p.depth = static_cast<float>(depth);
+  gp::ContactManifold m;
+  m.normal = {0.0, 1.0};
+  m.count = 1;
   // The contact point is midway between the two deepest points.
-  const gp::Vec2 point = s.position[1] + arm + gp::Vec2{0.0, 0.5 * depth};
-  gp::set_arms(p, c.normal, point - s.position[1], point);
-  p.normal_mass = 1.0;
+  m.points[0].position = s.position[1] + arm + gp::Vec2{0.0, 0.5 * depth};
+  m.points[0].depth = depth;
+  gp::ContactSet contacts;
+  gp::append_contact({1, 0}, shapes, m, s, contacts);
+  contacts.points(contacts[0])[0].normal_mass = 1.0;
   s.angle[1] = turn;
   gp::RotationCache rotations;
   gp::correct_positions(contacts, shapes, inertia, detected_angle, 1, 0.0, s, rotations);

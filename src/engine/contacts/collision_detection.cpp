@@ -27,6 +27,15 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
   return pairs_;
 }
 
+namespace {
+
+AnchorKind anchor_kind(const PackedGeometry& shape) {
+  if (shape.kind() != ShapeKind::kCircle) return AnchorKind::kFixed;
+  return shape.circle().center == Vec2::Zero() ? AnchorKind::kCentredDisc : AnchorKind::kOffsetDisc;
+}
+
+}  // namespace
+
 Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
                         const MotionState& s, ContactSet& contacts) {
   const ShapeRecord& a = shapes[pair.first];
@@ -40,11 +49,15 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
   c.body_b = b.body;
   c.normal = m.normal;
   c.friction = std::sqrt(a.friction * b.friction);
+  const AnchorKind anchor_a = anchor_kind(a.local);
+  const AnchorKind anchor_b = anchor_kind(b.local);
   const std::span<ContactPointState> points = contacts.points(c);
   for (int k = 0; k < m.count; ++k) {
     const ContactPoint& point = m.points[k];
     ContactPointState& q = points[k];
     q.id = point.id;
+    q.anchor_a = anchor_a;
+    q.anchor_b = anchor_b;
     q.depth = static_cast<float>(point.depth);
     set_arms(q, m.normal, point.position - s.position[a.body], point.position - s.position[b.body]);
   }

@@ -21,6 +21,14 @@ inline Vec2 contact_tangent(const Vec2& normal) {
   return {-normal.y(), normal.x()};
 }
 
+/// How a shape's deepest point inside the other moves with its body, which the position passes
+/// follow (correct_positions).
+enum class AnchorKind : std::uint8_t {
+  kFixed,        ///< fixed in the body: a polygon's or a segment's
+  kCentredDisc,  ///< of a disc about its body's centre of mass: the radius along the normal, always
+  kOffsetDisc,   ///< of a disc off it: the radius along the normal from a centre fixed in the body
+};
+
 /// One point of a contact constraint. The fields a solver pass reads come first, so that they
 /// share two cache lines. The arms themselves are not kept: set_arms keeps their cross products
 /// with the normal and the tangent, from which arm_a and arm_b rebuild them; nor are the points
@@ -46,6 +54,8 @@ struct ContactPointState {
   /// resolve nanometres, and this saves 8 of a point's 96 bytes.
   float depth = 0.0F;
   FeatureId id;
+  AnchorKind anchor_a = AnchorKind::kFixed;  ///< in the room left after the id
+  AnchorKind anchor_b = AnchorKind::kFixed;
 };
 
 /// Sets the arms of `p` [m], from A's and B's centre of mass to the point, for a contact whose

@@ -421,25 +421,25 @@ void RotationCache::reset(std::size_t bodies) {
 
 namespace {
 
-// How a body's deepest point inside the other body moves with it in the position passes: the
-// arm `turning` [m], from the body's centre of mass, turns with the body, and the point lies
-// `radius` [m] beyond its end, along the normal away from the body. A disc's deepest point does not
-// turn with the disc, only its centre does.
-struct Anchor {
-  Vec2 turning;
-  double radius;
-};
-
-// The anchor of `shape` whose deepest point, at detection, was at `arm()` from its body's centre of
-// mass; `outward` is the unit normal away from the body. The arm is rebuilt only if needed: a disc
-// on its body's centre of mass, the common case, needs none.
-template <typename Arm>
-Anchor anchor(const ShapeRecord& shape, const Arm& arm, const Vec2& outward) {
-  if (shape.local.kind() != ShapeKind::kCircle) return {arm(), 0.0};
-  const Circle disc = shape.local.circle();
-  // Zero exactly rather than by round-off, which would cost the rotation trigonometry.
-  if (disc.center.x() == 0.0 && disc.center.y() == 0.0) return {Vec2::Zero(), disc.radius};
-  return {arm() - disc.radius * outward, disc.radius};
+// The arm [m], now, from a body's centre of mass to its deepest point inside the other body at
+// detection, carried along as the body moved and turned since. `deepest` gives that arm at
+// detection (rebuilt only where needed), `outward` the unit normal away from the body, `reach` the
+// arm's component along it, and `turned` turns a vector with the body.
+template <typename Arm, typename Turned>
+Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, const Vec2& outward,
+                double reach, const Turned& turned) {
+  switch (kind) {
+    case AnchorKind::kCentredDisc:
+      // Whichever way the disc turns, its deepest point is its radius away along the normal.
+      return reach * outward;
+    case AnchorKind::kOffsetDisc: {
+      const double radius = shape.local.circle().radius;
+      return turned(deepest() - radius * outward) + radius * outward;
+    }
+    case AnchorKind::kFixed:
+      break;
+  }
+  return turned(deepest());
 }
 
 }  // namespace
@@ -451,11 +451,8 @@ void correct_positions(const ContactSet& contacts, const BodyShapes& shapes,
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());
   const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
-  // The turning arm of body b's anchor, turned with b since detection; a disc's centre on its
-  // body's centre of mass needs no trigonometry.
-  const auto turned = [&](BodyId b, const Vec2& arm) -> Vec2 {
-    if (arm.x() == 0.0 && arm.y() == 0.0) return arm;
-    return rotations.rotate(b, turn(b), arm);
+  const auto turned_with = [&](BodyId b) {
+    return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
   };
   // Passes end after one that found no point overlapping by more than two slops: what is left
   // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
@@ -465,13 +462,15 @@ void correct_positions(const ContactSet& contacts, const BodyShapes& shapes,
       for (const ContactPointState& p : contacts.points(c)) {
         // Each body's deepest point inside the other at detection, half the depth from the
         // contact point.
-        const Vec2 half_depth = 0.5 * p.depth * c.normal;
-        const Anchor on_a = anchor(
-            shapes[c.shape_a], [&]() -> Vec2 { return arm_a(c, p) - half_depth; }, -c.normal);
-        const Anchor on_b = anchor(
-            shapes[c.shape_b], [&]() -> Vec2 { return arm_b(c, p) + half_depth; }, c.normal);
-        const Vec2 arm_a = turned(c.body_a, on_a.turning) - on_a.radius * c.normal;
-        const Vec2 arm_b = turned(c.body_b, on_b.turning) + on_b.radius * c.normal;
+        const double half_depth = 0.5 * p.depth;
+        const Vec2 arm_a = anchor_arm(
+            p.anchor_a, shapes[c.shape_a],
+            [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
+            half_depth - p.tangent_arm_a, turned_with(c.body_a));
+        const Vec2 arm_b = anchor_arm(
+            p.anchor_b, shapes[c.shape_b],
+            [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
+            p.tangent_arm_b + half_depth, turned_with(c.body_b));
         const double separation =
             (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
