@@ -6,7 +6,6 @@
 namespace gp {
 
 void PairOrder::sort(std::vector<ProxyPair>& pairs, std::uint32_t id_bound) {
-  // Each first id's count of pairs in its end, then the buckets laid out one after the other.
   buckets_.resize(id_bound);
   for (Bucket& bucket : buckets_) bucket.end = 0;
   for (const ProxyPair& p : pairs) ++buckets_[p.first].end;
