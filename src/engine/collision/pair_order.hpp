@@ -3,33 +3,23 @@
 // order, and so the result, does not depend on the broadphase's internals.
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "engine/collision/broadphase.hpp"
 
 namespace gp {
 
-/// Sorts pairs of ids below a bound by (first, second): a counting sort by first id, O(K + bound)
-/// for K pairs where a comparison sort takes O(K log K), done in place (American flag sort) so as
-/// to keep no second list as large as the pairs; then each first id's pairs, few but for a ground
-/// or a wall, sorted by second.
+/// Sorts pairs of ids below a bound by (first, second) in O(K + bound) for K pairs: a radix sort
+/// with one digit per id, where a comparison sort takes O(K log K).
 class PairOrder {
  public:
-  /// Sorts `pairs`, whose ids are all below `id_bound` and which are all different, ascending.
-  /// Allocates nothing once its buffer has grown to the scene.
+  /// Sorts `pairs`, whose ids are all below `id_bound`, ascending. Allocates nothing once its
+  /// buffers have grown to the scene.
   void sort(std::vector<ProxyPair>& pairs, std::uint32_t id_bound);
 
  private:
-  /// Where the pairs of one first id go: [next, end) is what is still to be filled.
-  struct Bucket {
-    std::uint32_t next;
-    std::uint32_t end;
-  };
-  /// Sorts the pairs of one first id by second id.
-  static void sort_by_second(std::span<ProxyPair> pairs);
-
-  std::vector<Bucket> buckets_;  // per first id
+  std::vector<std::uint32_t> starts_;  // per id: where its pairs start in the output
+  std::vector<ProxyPair> scratch_;
 };
 
 }  // namespace gp
