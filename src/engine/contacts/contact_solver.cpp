@@ -479,8 +479,13 @@ void correct_positions(const ContactSet& contacts, const BodyShapes& shapes,
         // The impulses' effective mass, applied to a displacement instead of a velocity; set up
         // for the step's arms, which the small turns of these passes barely change.
         const Vec2 shift = -excess * p.normal_mass * c.normal;
-        const Turns turns = displace(inertia, c, shift, dd::torque(arm_a, shift),
-                                     dd::torque(arm_b, tm::reaction_force(shift)), s);
+        // A push along the normal through a disc's centre does not turn it: zero exactly, not
+        // by round-off, so that nothing turns it and its rotation is not looked up.
+        const auto moment = [&](AnchorKind kind, const Vec2& arm, const Vec2& push) {
+          return kind == AnchorKind::kCentredDisc ? 0.0 : dd::torque(arm, push);
+        };
+        const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, arm_a, shift),
+                                     moment(p.anchor_b, arm_b, tm::reaction_force(shift)), s);
         rotations.turn(c.body_a, turn(c.body_a), turns.a);
         rotations.turn(c.body_b, turn(c.body_b), turns.b);
       }

@@ -120,7 +120,7 @@ class RotationCache {
   void turn(BodyId body, double angle, double turn) {
     // Beyond this, the series of Rotation::turned_slightly errs by more than 1e-13 rad.
     constexpr double kSmallTurn = 1e-3;
-    if (std::isnan(angle_[body]) || turn == 0.0) return;
+    if (turn == 0.0 || std::isnan(angle_[body])) return;
     if (std::abs(turn) > kSmallTurn) {
       angle_[body] = std::numeric_limits<double>::quiet_NaN();
       return;
