@@ -37,6 +37,11 @@ BodyId Space::add_body(const BodyDef& def) {
     throw InputError(prefix + ".moment", "is required for a body without area that rotates",
                      "none");
   }
+  // Checked before anything is added, so that a body that cannot be added leaves no part behind.
+  if (def.shapes.size() > BodyShapes::kMaxShapes - shapes_.size()) {
+    throw InputError(prefix + ".shapes", "at most 2^24 shapes in a space (warm starts' keys)",
+                     std::to_string(shapes_.size() + def.shapes.size()) + " in all");
+  }
   names_.add(def.name);
   append(types_, def.type);
   append(dynamic_, dynamic);
