@@ -25,6 +25,12 @@ struct ShapeRecord {
   bool moves;  ///< false for the shapes of static bodies
   double restitution;
   double friction;
+
+  /// Whether this is a disc about its body's centre of mass, which its body's turning leaves where
+  /// it is.
+  bool centred_disc() const {
+    return local.kind() == ShapeKind::kCircle && local.circle().center == Vec2::Zero();
+  }
 };
 
 /// The shapes of a space, and their world placement for a given motion state.
@@ -73,10 +79,8 @@ void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
   for (std::size_t i = 0; i < records_.size(); ++i) {
     const ShapeRecord& r = records_[i];
     if (!r.moves && !first) continue;
-    const bool turning_moves_it =
-        r.local.kind() != ShapeKind::kCircle || r.local.circle().center != Vec2::Zero();
     const auto [position, angle] = pose(r.body);
-    world.place(i, r.local, turning_moves_it ? Transform(position, angle) : Transform(position));
+    world.place(i, r.local, r.centred_disc() ? Transform(position) : Transform(position, angle));
   }
 }
 

@@ -29,9 +29,9 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
 
 namespace {
 
-AnchorKind anchor_kind(const PackedGeometry& shape) {
-  if (shape.kind() != ShapeKind::kCircle) return AnchorKind::kFixed;
-  return shape.circle().center == Vec2::Zero() ? AnchorKind::kCentredDisc : AnchorKind::kOffsetDisc;
+AnchorKind anchor_kind(const ShapeRecord& shape) {
+  if (shape.centred_disc()) return AnchorKind::kCentredDisc;
+  return shape.local.kind() == ShapeKind::kCircle ? AnchorKind::kOffsetDisc : AnchorKind::kFixed;
 }
 
 }  // namespace
@@ -49,8 +49,8 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
   c.body_b = b.body;
   c.normal = m.normal;
   c.friction = std::sqrt(a.friction * b.friction);
-  const AnchorKind anchor_a = anchor_kind(a.local);
-  const AnchorKind anchor_b = anchor_kind(b.local);
+  const AnchorKind anchor_a = anchor_kind(a);
+  const AnchorKind anchor_b = anchor_kind(b);
   const std::span<ContactPointState> points = contacts.points(c);
   for (int k = 0; k < m.count; ++k) {
     const ContactPoint& point = m.points[k];

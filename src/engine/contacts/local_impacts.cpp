@@ -92,22 +92,11 @@ void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, dou
   }
 }
 
-void LocalImpacts::restart(BodyId b, double tau, MotionState& start,
-                           const StepAccelerations& acceleration) const {
-  // Under constant accelerations the path through the state just after the impact, followed
-  // back by τ, starts where the body must start to pass through that state.
-  const Ballistic back{start, acceleration};
-  const BodyState from{back.position(b, -tau), back.angle(b, -tau), back.velocity(b, -tau),
-                       back.angular_velocity(b, -tau)};
-  start.set(b, from);
-}
-
-void LocalImpacts::move_to_impact(BodyId b, double tau, MotionState& start,
-                                  const StepAccelerations& acceleration) const {
-  const Ballistic motion{start, acceleration};
-  const BodyState at{motion.position(b, tau), motion.angle(b, tau), motion.velocity(b, tau),
-                     motion.angular_velocity(b, tau)};
-  start.set(b, at);
+void LocalImpacts::follow_path(BodyId b, double tau, MotionState& start,
+                               const StepAccelerations& acceleration) const {
+  const Ballistic path{start, acceleration};
+  start.set(b, {path.position(b, tau), path.angle(b, tau), path.velocity(b, tau),
+                path.angular_velocity(b, tau)});
 }
 
 bool LocalImpacts::resolve(double t, double h, MotionState& start,
@@ -141,13 +130,15 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
             continue;
           held_.push_back({b, start.of(b)});
         }
-        move_to_impact(b, tau, start, acceleration);
+        follow_path(b, tau, start, acceleration);
       }
     }
     std::sort(group_.begin(), group_.end());
     resolve_impacts(group_, shapes_, inertia_, settings_, t + tau, start, impact_contacts_, log);
     ++impacts;
-    for (BodyId b : changed_) restart(b, tau, start, acceleration);
+    // Under constant accelerations the path through the state just after the impact, followed
+    // back by τ, starts where the body must start to pass through that state.
+    for (BodyId b : changed_) follow_path(b, -tau, start, acceleration);
     for (const Held& x : held_) start.set(x.body, x.state);
     std::erase_if(pending_, [this](const Pending& e) {
       return changed(shapes_[e.pair.first]) || changed(shapes_[e.pair.second]);

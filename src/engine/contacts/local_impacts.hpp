@@ -63,12 +63,9 @@ class LocalImpacts {
   bool engaged(const ContactSet& contacts, const Contact& c, const MotionState& s, double h) const;
   bool in_solver(std::uint32_t shape) const { return marks_[shapes_[shape].body] & kInSolver; }
   bool changed(const ShapeRecord& shape) const { return marks_[shape.body] & kChanged; }
-  /// Moves body b in `start` to its state at τ on its path.
-  void move_to_impact(BodyId b, double tau, MotionState& start,
-                      const StepAccelerations& acceleration) const;
-  /// Body b's state in `start`, resolved at τ, replaced by the start of the path through it.
-  void restart(BodyId b, double tau, MotionState& start,
-               const StepAccelerations& acceleration) const;
+  /// Moves body b in `start` along its ballistic path from there by τ [s] (back for τ < 0).
+  void follow_path(BodyId b, double tau, MotionState& start,
+                   const StepAccelerations& acceleration) const;
   /// Finds the impacts from τ on of the shapes of the `changed` bodies, whose paths have changed,
   /// having placed them at τ in `rest_start` and at h in `end`; false when one of them could pass
   /// through a body of the contact solver.
