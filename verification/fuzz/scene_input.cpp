@@ -19,11 +19,16 @@ std::size_t shape_count(const Scene& scene) {
   return count;
 }
 
-/// The scene cut to at most max_steps steps and max_outputs output instants: run_steps takes
-/// at least one step per output interval, so both bound the work.
+/// The scene cut to the limits: at most max_steps steps and max_outputs output instants (run_steps
+/// takes at least one step per output interval, so both bound the work), and a solver doing at
+/// most the limits' work a step.
 Scene bounded(Scene scene, const SceneInputLimits& limits) {
   scene.duration = std::min(scene.duration, limits.max_steps * scene.dt);
   scene.output_dt = std::max(scene.output_dt, scene.duration / limits.max_outputs);
+  Settings& settings = scene.settings;
+  settings.velocity_iterations = std::min(settings.velocity_iterations, limits.max_passes);
+  settings.position_iterations = std::min(settings.position_iterations, limits.max_passes);
+  settings.direct_solve_points = std::min(settings.direct_solve_points, limits.max_direct_points);
   return scene;
 }
 
@@ -32,13 +37,15 @@ Scene bounded(Scene scene, const SceneInputLimits& limits) {
 SceneInputOutcome run_scene_input(const std::string& text, const SceneInputLimits& limits) {
   try {
     const Scene scene = parse_scene(text);
-    const auto space = build_space(scene);
+    build_space(scene);
     if (scene.bodies.size() > limits.max_bodies || shape_count(scene) > limits.max_shapes) {
       return SceneInputOutcome::kRan;
     }
+    const Scene run = bounded(scene, limits);
+    const auto space = build_space(run);
     std::ostringstream csv_text;
     TrajectoryCsv csv(csv_text);
-    run_scene(*space, bounded(scene, limits), [&](double t) { csv.write(t, *space); });
+    run_scene(*space, run, [&](double t) { csv.write(t, *space); });
     return SceneInputOutcome::kRan;
   } catch (const InputError&) {
     return SceneInputOutcome::kInputError;

@@ -58,16 +58,14 @@ void find_islands(const ContactSet& contacts, const BodyInertia& inertia, Island
     scratch.order[counts[root(contacts[i])]++] = i;
 }
 
-// The active-set method of solve_small_islands on scratch.rows; leaves the new normal impulses in
-// scratch.impulse. Returns false if it does not settle or K restricted to the pushing points is
-// singular (redundant points).
+// The normal impulses of the island of scratch.rows into scratch.impulse (solve_normal_lcp).
+// Returns false where that finds none.
 bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const MotionState& s,
                   IslandScratch& scratch) {
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
   auto k = scratch.k.topLeftCorner(n, n);
   auto w0 = scratch.residual.head(n);
   auto start = scratch.initial.head(n);
-  auto change = scratch.change.head(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Contact& ci = contacts[scratch.rows[i].contact];
     const ContactPointState& pi = contacts.points(ci)[scratch.rows[i].point];
@@ -78,56 +76,8 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const 
     }
     w0(i) = contact_normal_velocity(s, ci, pi) - pi.target_normal_velocity;
     start(i) = pi.normal_impulse;
-    scratch.active[i] = pi.normal_impulse > 0.0 || w0(i) < 0.0;
   }
-  // Each round either settles or moves a point between the pushing and the free set; a
-  // complementarity problem with a positive definite K settles within a few rounds in practice.
-  const int rounds = 2 * static_cast<int>(n) + 4;
-  for (int round = 0; round < rounds; ++round) {
-    scratch.active_rows.clear();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (scratch.active[i]) scratch.active_rows.push_back(static_cast<int>(i));
-    }
-    const auto a = static_cast<Eigen::Index>(scratch.active_rows.size());
-    // Free points let go of their impulse: Δλ = −λ₀ there.
-    for (Eigen::Index i = 0; i < n; ++i) change(i) = scratch.active[i] ? 0.0 : -start(i);
-    auto k_active = scratch.k_active.topLeftCorner(a, a);
-    auto rhs = scratch.rhs.head(a);
-    for (Eigen::Index r = 0; r < a; ++r) {
-      const int i = scratch.active_rows[r];
-      rhs(r) = -(w0(i) + k.row(i).dot(change));
-      for (Eigen::Index q = 0; q < a; ++q) k_active(r, q) = k(i, scratch.active_rows[q]);
-      // A heap is often statically indeterminate (a box across two others: more points than
-      // the bodies' vertical and turning freedoms), which makes K singular. A compliance of
-      // 1e-10 of each point's own makes it definite and its impulses unique, and leaves the
-      // velocities, which are unique anyway, within 1e-10 of exact.
-      k_active(r, r) *= 1.0 + 1e-10;
-    }
-    if (a > 0) {
-      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> factor(k_active);
-      if (factor.info() != Eigen::Success) return false;
-      factor.solveInPlace(rhs);
-      for (Eigen::Index r = 0; r < a; ++r) change(scratch.active_rows[r]) = rhs(r);
-    }
-    bool settled = true;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double impulse = start(i) + change(i);
-      const double w = w0(i) + k.row(i).dot(change);
-      // Round-off of the solve, relative to the impulses and speeds at stake.
-      if (scratch.active[i] && impulse < -1e-12 * (1.0 + std::abs(start(i)))) {
-        scratch.active[i] = 0;
-        settled = false;
-      } else if (!scratch.active[i] && w < -1e-12 * (1.0 + std::abs(w0(i)))) {
-        scratch.active[i] = 1;
-        settled = false;
-      }
-    }
-    if (settled) {
-      scratch.impulse.head(n) = (start + change).cwiseMax(0.0);
-      return true;
-    }
-  }
-  return false;
+  return solve_normal_lcp(k, w0, start, scratch.lcp, scratch.impulse.head(n)).solved;
 }
 
 }  // namespace
@@ -139,15 +89,11 @@ int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::s
   const auto size = static_cast<Eigen::Index>(max_points);
   if (scratch.k.rows() < size) {
     scratch.k.resize(size, size);
-    scratch.k_active.resize(size, size);
     scratch.residual.resize(size);
     scratch.initial.resize(size);
     scratch.impulse.resize(size);
-    scratch.change.resize(size);
-    scratch.rhs.resize(size);
-    scratch.active.resize(max_points);
     scratch.rows.reserve(max_points);
-    scratch.active_rows.reserve(max_points);
+    scratch.lcp.reserve(size);
   }
   int solved = 0;
   const std::size_t bodies = inertia.inverse_mass.size();

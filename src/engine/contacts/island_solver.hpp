@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "engine/contacts/contact_solver.hpp"
+#include "engine/contacts/normal_lcp.hpp"
 
 namespace gp {
 
@@ -27,13 +28,12 @@ struct IslandScratch {
     std::uint32_t contact;
     std::uint32_t point;
   };
-  std::vector<Row> rows;  // the island's points
-  Eigen::MatrixXd k;      // 1/kg: effective-mass matrix of the island's points
-  Eigen::MatrixXd k_active;
-  Eigen::VectorXd residual, initial, impulse, change, rhs;
-  std::vector<char> active;
-  std::vector<int> active_rows;
-  Eigen::LDLT<Eigen::MatrixXd> factor;
+  std::vector<Row> rows;     // the island's points
+  Eigen::MatrixXd k;         // 1/kg: effective-mass matrix of the island's points
+  Eigen::VectorXd residual;  // m/s: w₀, each point's normal velocity less its target
+  Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
+  Eigen::VectorXd impulse;   // N·s: λ, the solution
+  NormalLcpScratch lcp;
 };
 
 /// For each island (contacts joined through the dynamic bodies they share) of at most
@@ -42,9 +42,8 @@ struct IslandScratch {
 /// where w is each point's normal velocity less its target, w₀ and λ₀ the current ones, and K
 /// the effective-mass matrix of the points (GD:impulse's denominators on its diagonal), with the
 /// friction impulses held; then clamps the friction impulses to the new friction cones. Found by
-/// an active-set method (the points that push, solved as equalities, until no pushing point pulls
-/// and no free point closes); an island where that does not settle keeps the sequential
-/// impulses' result. Applies the changes to the velocities of `s` (DD:impulseV, DD:torque,
+/// solve_normal_lcp; an island it does not solve within its round limit keeps its impulses for
+/// the sequential passes. Applies the changes to the velocities of `s` (DD:impulseV, DD:torque,
 /// TM:NewtonThirdLawMot). Returns the number of islands solved.
 int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::size_t max_points,
                         MotionState& s, IslandScratch& scratch);
