@@ -26,9 +26,10 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Debug -DGP_FUZZ
 cmake --build build-fuzz --target gamephysics_fuzz_scene -j2
 mkdir -p build-fuzz/corpus build-fuzz/artifacts
 # Seeds: the bad inputs of the tests, the crash inputs found so far and the shipped scenes; new
-# inputs go to build-fuzz/corpus, a failing one to build-fuzz/artifacts/. The log is long: its
-# end is printed, with the failure's report when there is one.
-if ! build-fuzz/bin/gamephysics_fuzz_scene -max_total_time=60 -timeout=5 -rss_limit_mb=2048 \
+# inputs go to build-fuzz/corpus, a failing one to build-fuzz/artifacts/. A fixed random seed, so
+# that every clean checkout fuzzes the same inputs. The log is long: its end is printed, with the
+# failure's report when there is one.
+if ! build-fuzz/bin/gamephysics_fuzz_scene -seed=1 -max_total_time=60 -timeout=5 -rss_limit_mb=2048 \
   -max_len=32768 -dict=verification/fuzz/scene.dict -artifact_prefix=build-fuzz/artifacts/ \
   -print_final_stats=1 build-fuzz/corpus verification/fuzz/corpus verification/fuzz/crashes scenes \
   > build-fuzz/fuzz.log 2>&1; then
