@@ -18,14 +18,16 @@ double heap_in_use() {
 
 }  // namespace
 
-TimedRun time_run(const Workload& w, Engine engine) {
+TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around) {
   const double heap_before = heap_in_use();
   EngineRun run(engine, w.scene);
   const Vec2 start = w.watched ? run.state(*w.watched).position : Vec2::Zero();
+  if (around.before) around.before();
   // steady_clock: wall time that no clock adjustment during the run can shift.
   const auto begin = std::chrono::steady_clock::now();
   for (int i = 0; i < w.steps; ++i) run.step(w.scene.dt);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - begin;
+  if (around.after) around.after();
   TimedRun timed{elapsed.count()};
   if (w.watched) timed.moved_m = (run.state(*w.watched).position - start).norm();
   timed.heap_bytes = heap_in_use() - heap_before;

@@ -2,6 +2,8 @@
 // One whole run of a workload in one engine, timed alike for Google Benchmark
 // (gamephysics_bench) and for the speed section of `gamephysics verify`.
 
+#include <functional>
+
 #include "verification/bench/bench_engine.hpp"
 #include "verification/bench/workloads.hpp"
 
@@ -17,9 +19,16 @@ struct TimedRun {
   double heap_bytes = 0.0;
 };
 
+/// Called just before the first step and just after the last, so that a caller's own clocks
+/// (Google Benchmark's CPU time) can leave the set-up out too.
+struct AroundSteps {
+  std::function<void()> before;
+  std::function<void()> after;
+};
+
 /// Sets `w` up in `engine`, steps it `w.steps` times by w.scene.dt, times the steps and measures
-/// the heap the engine then holds. Throws
-/// what the engine throws (NumericalError when a state becomes non-finite).
-TimedRun time_run(const Workload& w, Engine engine);
+/// the heap the engine then holds. Throws what the engine throws (NumericalError when a state
+/// becomes non-finite).
+TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around = {});
 
 }  // namespace gp::bench
