@@ -154,7 +154,7 @@ bool Space::local_step(double h) {
                           impacts_this_step_ < settings_.max_impacts_per_step, contacts_);
   local_impacts_.hand_over(world_start_, start_, h, contacts_, speculative_contacts_);
   if (!local_impacts_.resolve(time_, h, start_, motion.acceleration, world_start_, world_end_,
-                              impacts_this_step_, impacts_)) {
+                              contacts_, impacts_this_step_, impacts_)) {
     return false;
   }
   state_ = start_;

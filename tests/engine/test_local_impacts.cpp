@@ -1,6 +1,6 @@
 // Impacts resolved for their own bodies inside a step (LocalImpacts): a chain of impacts within
-// one step against the closed form, an impact on a body in resting contact left to the solver,
-// and no allocation in a step once a scene is warmed up.
+// one step, and one running over into the next, against the closed form, an impact on a body in
+// resting contact left to the solver, and no allocation in a step once a scene is warmed up.
 #include <catch2/catch.hpp>
 
 #include "gamephysics/gamephysics.hpp"
@@ -51,6 +51,37 @@ TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form
   CHECK_THAT(s.velocity.y(), WithinAbs(30.0, 1e-9));
   CHECK_THAT(s.position.x(), WithinAbs(0.1 + 0.6, 1e-9));
   CHECK_THAT(s.position.y(), WithinAbs(0.1 + 0.4, 1e-9));
+}
+
+TEST_CASE("A row of discs passes the impulse on at the closed-form times, a step apart too",
+          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+  // Four equal elastic discs in a row, 5 mm, 2 mm and 15 mm apart, the first moving at 1 m/s:
+  // each impact hands the whole velocity on, at t = 5 ms, 7 ms and 22 ms. The third disc is
+  // struck by the second impact, which is found only after the first, and the last gap is
+  // within the contact margin (20 mm): the contact made at the start of the step, from the
+  // third disc's old path, must not stand in for its impact in the next step.
+  gp::Space space;
+  const double h = 1.0 / 60;
+  const double x_c = 0.4 + 0.005 + 0.002;
+  const double x_d = x_c + 0.2 + 0.015;
+  space.add_body(disc("a", {0.0, 0.0}, {1.0, 0.0}, 1.0));
+  space.add_body(disc("b", {0.2 + 0.005, 0.0}, {0.0, 0.0}, 1.0));
+  const auto c = space.add_body(disc("c", {x_c, 0.0}, {0.0, 0.0}, 1.0));
+  const auto d = space.add_body(disc("d", {x_d, 0.0}, {0.0, 0.0}, 1.0));
+  space.step(h);
+  REQUIRE(space.impacts().size() == 2);
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.005, 1e-12));
+  CHECK_THAT(space.impacts()[1].time, WithinAbs(0.007, 1e-12));
+  CHECK_THAT(space.state(c).velocity.x(), WithinAbs(1.0, 1e-9));
+  CHECK_THAT(space.state(c).position.x(), WithinAbs(x_c + (h - 0.007), 1e-9));
+  CHECK_THAT(space.state(d).velocity.x(), WithinAbs(0.0, 1e-9));
+  CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d, 1e-9));
+  space.step(h);
+  REQUIRE(space.impacts().size() == 1);
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.022, 1e-12));
+  CHECK_THAT(space.state(c).velocity.x(), WithinAbs(0.0, 1e-9));
+  CHECK_THAT(space.state(d).velocity.x(), WithinAbs(1.0, 1e-9));
+  CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d + (2 * h - 0.022), 1e-9));
 }
 
 TEST_CASE("A disc dropped fast on a disc resting on the floor stops on it and adds no energy",

@@ -85,11 +85,15 @@ void LocalImpacts::hand_over(const WorldShapes& start, const MotionState& s, dou
       marks_[shapes_[e.pair.first].body] |= kWithImpact;
       marks_[shapes_[e.pair.second].body] |= kWithImpact;
     }
-    contacts.erase_if([this](const Contact& c) {
-      return (dynamic_[c.body_a] && (marks_[c.body_a] & kWithImpact)) ||
-             (dynamic_[c.body_b] && (marks_[c.body_b] & kWithImpact));
-    });
+    drop_contacts_with_impacts(contacts);
   }
+}
+
+void LocalImpacts::drop_contacts_with_impacts(ContactSet& contacts) const {
+  contacts.erase_if([this](const Contact& c) {
+    return (dynamic_[c.body_a] && (marks_[c.body_a] & kWithImpact)) ||
+           (dynamic_[c.body_b] && (marks_[c.body_b] & kWithImpact));
+  });
 }
 
 void LocalImpacts::follow_path(BodyId b, double tau, MotionState& start,
@@ -101,8 +105,10 @@ void LocalImpacts::follow_path(BodyId b, double tau, MotionState& start,
 
 bool LocalImpacts::resolve(double t, double h, MotionState& start,
                            const StepAccelerations& acceleration, WorldShapes& world_start,
-                           WorldShapes& end, int& impacts, std::vector<Impact>& log) {
+                           WorldShapes& end, ContactSet& contacts, int& impacts,
+                           std::vector<Impact>& log) {
   if (pending_.empty()) return true;
+  bool newly_with_impact = false;
   const Ballistic motion{start, acceleration};
   const double same_time = simultaneity(h);
   while (!pending_.empty() && impacts < settings_.max_impacts_per_step) {
@@ -144,8 +150,12 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
       return changed(shapes_[e.pair.first]) || changed(shapes_[e.pair.second]);
     });
     if (!search_after(changed_, tau, h, motion, world_start, end)) return false;
-    for (BodyId b : changed_) marks_[b] &= ~kChanged;
+    for (BodyId b : changed_) {
+      newly_with_impact |= !(marks_[b] & kWithImpact);
+      marks_[b] = (marks_[b] & ~kChanged) | kWithImpact;
+    }
   }
+  if (newly_with_impact) drop_contacts_with_impacts(contacts);
   return true;
 }
 

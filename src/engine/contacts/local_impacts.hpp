@@ -45,10 +45,14 @@ class LocalImpacts {
   /// Each body an impact changes gets, in `start`, the state from which its ballistic path over
   /// the step passes through its state just after the impact; its shapes' placements follow: in
   /// `world_start` where the rest of the path starts (at the impact), in `end` where it ends.
-  /// Returns false, leaving the step to be sub-stepped, when a changed path could carry a body
-  /// through one of the contact solver's bodies within the step.
+  /// The other contacts of the changed bodies (in `contacts`, none of them engaged, since a
+  /// changed body is not the solver's) are dropped, as hand_over() drops those of the bodies with
+  /// impacts: they were made from the bodies' old paths, and the search after each impact covers
+  /// them. Returns false, leaving the step to be sub-stepped, when a changed path could carry a
+  /// body through one of the contact solver's bodies within the step.
   bool resolve(double t, double h, MotionState& start, const StepAccelerations& acceleration,
-               WorldShapes& world_start, WorldShapes& end, int& impacts, std::vector<Impact>& log);
+               WorldShapes& world_start, WorldShapes& end, ContactSet& contacts, int& impacts,
+               std::vector<Impact>& log);
 
  private:
   struct Pending {
@@ -63,6 +67,8 @@ class LocalImpacts {
   bool engaged(const ContactSet& contacts, const Contact& c, const MotionState& s, double h) const;
   bool in_solver(std::uint32_t shape) const { return marks_[shapes_[shape].body] & kInSolver; }
   bool changed(const ShapeRecord& shape) const { return marks_[shape.body] & kChanged; }
+  /// Drops from `contacts` every contact of a dynamic body marked kWithImpact.
+  void drop_contacts_with_impacts(ContactSet& contacts) const;
   /// Moves body b in `start` along its ballistic path from there by τ [s] (back for τ < 0).
   void follow_path(BodyId b, double tau, MotionState& start,
                    const StepAccelerations& acceleration) const;
@@ -80,7 +86,7 @@ class LocalImpacts {
   // What hand_over() and resolve() learn of each body, one byte of these bits per body.
   enum Mark : std::uint8_t {
     kInSolver = 1,    // dynamic and in a contact of the solver this step
-    kWithImpact = 2,  // in a pending impact after hand_over()
+    kWithImpact = 2,  // in a pending impact after hand_over(), or changed by one in resolve()
     kChanged = 4,     // dynamic and in the impact being resolved
   };
   std::vector<std::uint8_t> marks_;
