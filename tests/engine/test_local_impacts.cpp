@@ -84,6 +84,30 @@ TEST_CASE("A row of discs passes the impulse on at the closed-form times, a step
   CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d + (2 * h - 0.022), 1e-9));
 }
 
+TEST_CASE("Impacts left over at the step's limit are resolved as contacts at its end",
+          "[FR:Determine-Collision-Response-Over-Time][TM:NewtonThirdLawMot]") {
+  // The row of discs with one impact a step: the first impact (5 ms) is exact, the second
+  // (7 ms) is over the limit and must still be met, by the contact of the two discs at the end
+  // of the step, rather than let them run 9.7 mm into each other.
+  gp::Settings settings;
+  settings.max_impacts_per_step = 1;
+  gp::Space space(settings);
+  const double h = 1.0 / 60;
+  const auto a = space.add_body(disc("a", {0.0, 0.0}, {1.0, 0.0}, 1.0));
+  const auto b = space.add_body(disc("b", {0.2 + 0.005, 0.0}, {0.0, 0.0}, 1.0));
+  const auto c = space.add_body(disc("c", {0.4 + 0.005 + 0.002, 0.0}, {0.0, 0.0}, 1.0));
+  space.step(h);
+  REQUIRE(space.impacts().size() == 1);
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.005, 1e-12));
+  const double gap = space.state(c).position.x() - space.state(b).position.x() - 0.2;
+  CHECK(gap > -settings.linear_slop);
+  // The contact stops b's approach; momentum is kept whatever it does.
+  CHECK(space.state(c).velocity.x() >= space.state(b).velocity.x() - 1e-9);
+  double momentum = 0.0;
+  for (gp::BodyId id : {a, b, c}) momentum += space.mass(id) * space.state(id).velocity.x();
+  CHECK_THAT(momentum, WithinAbs(space.mass(a) * 1.0, 1e-12));
+}
+
 TEST_CASE("A disc dropped fast on a disc resting on the floor stops on it and adds no energy",
           "[FR:Determine-Collision-Response-Over-Time][GD:impulse]") {
   gp::Settings settings;

@@ -155,6 +155,7 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
       marks_[b] = (marks_[b] & ~kChanged) | kWithImpact;
     }
   }
+  if (!pending_.empty()) return false;
   if (newly_with_impact) drop_contacts_with_impacts(contacts);
   return true;
 }

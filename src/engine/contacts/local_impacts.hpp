@@ -41,15 +41,19 @@ class LocalImpacts {
                  ContactSet& speculative);
 
   /// After hand_over(), resolves the remaining impacts in time order, each at its t_c = t + τ,
-  /// and logs them in `log` (at most `max_impacts` - `impacts` of them; `impacts` counts them).
+  /// and logs them in `log` (`impacts` counts them against Settings::max_impacts_per_step).
   /// Each body an impact changes gets, in `start`, the state from which its ballistic path over
   /// the step passes through its state just after the impact; its shapes' placements follow: in
   /// `world_start` where the rest of the path starts (at the impact), in `end` where it ends.
   /// The other contacts of the changed bodies (in `contacts`, none of them engaged, since a
   /// changed body is not the solver's) are dropped, as hand_over() drops those of the bodies with
-  /// impacts: they were made from the bodies' old paths, and the search after each impact covers
-  /// them. Returns false, leaving the step to be sub-stepped, when a changed path could carry a
-  /// body through one of the contact solver's bodies within the step.
+  /// impacts: they were made from the bodies' old paths. The search after each impact finds the
+  /// changed bodies' impacts with the bodies outside the solver; with a body of the solver it
+  /// only makes sure that neither can pass through the other within the step, and the next
+  /// step's contact takes over. Returns false, leaving the step to be sub-stepped, when a changed
+  /// path could carry a body through one of the solver's bodies within the step, or when impacts
+  /// are left at the limit (the sub-steps then resolve the rest of the step's contacts at its
+  /// end, as the limit promises, rather than leave those bodies with neither impact nor contact).
   bool resolve(double t, double h, MotionState& start, const StepAccelerations& acceleration,
                WorldShapes& world_start, WorldShapes& end, ContactSet& contacts, int& impacts,
                std::vector<Impact>& log);
