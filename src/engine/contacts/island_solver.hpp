@@ -42,9 +42,10 @@ struct IslandScratch {
 /// where w is each point's normal velocity less its target, w₀ and λ₀ the current ones, and K
 /// the effective-mass matrix of the points (GD:impulse's denominators on its diagonal), with the
 /// friction impulses held; then clamps the friction impulses to the new friction cones. Found by
-/// solve_normal_lcp; an island it does not solve within its round limit keeps its impulses for
-/// the sequential passes. Applies the changes to the velocities of `s` (DD:impulseV, DD:torque,
-/// TM:NewtonThirdLawMot). Returns the number of islands solved.
+/// solve_normal_lcp; an island it does not solve (within its round limit, or with K on a
+/// pushing set not positive definite) keeps its impulses for the sequential passes. Applies the
+/// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). Returns the
+/// number of islands solved.
 int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::size_t max_points,
                         MotionState& s, IslandScratch& scratch);
 

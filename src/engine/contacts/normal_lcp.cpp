@@ -10,10 +10,12 @@ namespace {
 constexpr int kBlockRounds = 3;
 // The compliance, relative to each point's own entry of K, that makes K definite.
 constexpr double kCompliance = 1e-10;
-// Relative round-off accepted in the impulses and speeds: the compliance's conditioning.
+// Relative error accepted in the impulses and speeds: the compliance bounds K's condition number
+// near 1e10, so a solve is good to about 1e-6 in the worst case, and far better in most.
 constexpr double kRoundOff = 1e-10;
-// A floor for the scales of impulses and speeds, so that an island at rest has a tolerance.
-constexpr double kTiny = 1e-300;
+// A floor for the scales of impulses [N·s] and speeds [m/s], so that an island at rest still has
+// a (normal, not subnormal) tolerance.
+constexpr double kTiny = 1e-200;
 
 // Each point's Δλ when the points marked in scratch.pushing push (w = 0) and the others let go
 // (λ = 0), into scratch.change. Returns false if K restricted to the pushing points is not
@@ -67,12 +69,18 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
   const Eigen::Index n = k.rows();
   scratch.reserve(n);
   const auto change = scratch.change.head(n);
-  const double stopping_impulse = n > 0 ? (-w0.array() / k.diagonal().array()).maxCoeff() : 0.0;
-  const double largest_start = n > 0 ? start.maxCoeff() : 0.0;
-  const double impulse_tolerance =
-      kRoundOff * std::max(largest_start + std::max(stopping_impulse, 0.0), kTiny);
-  const double speed_tolerance =
-      kRoundOff * std::max(n > 0 ? w0.cwiseAbs().maxCoeff() : 0.0, kTiny);
+  // One scale for the whole island: the largest impulse at stake (the largest so far, and the
+  // largest that alone would stop a closing point) and the largest speed (w₀, and what the
+  // compliance adds to it).
+  double impulse_scale = kTiny;
+  double speed_scale = kTiny;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!(k(i, i) > 0.0)) return {false, 0};  // a point no body can move: no solution
+    impulse_scale = std::max(impulse_scale, start(i) + std::max(-w0(i) / k(i, i), 0.0));
+    speed_scale = std::max(speed_scale, std::abs(w0(i)) + kCompliance * k(i, i) * start(i));
+  }
+  const double impulse_tolerance = kRoundOff * impulse_scale;
+  const double speed_tolerance = kRoundOff * speed_scale;
   // A stack starting at rest pushes at every level, not only where gravity has already made the
   // points close.
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -85,8 +93,12 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
     Eigen::Index wrong = 0;
     Eigen::Index last_wrong = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      scratch.wrong[i] = scratch.pushing[i] ? start(i) + change(i) < -impulse_tolerance
-                                            : w0(i) + k.row(i).dot(change) < -speed_tolerance;
+      // A free point's speed counts the compliance on its change too, so that every round
+      // works on the one problem with K + compliance, on which Murty's rule cannot cycle.
+      scratch.wrong[i] =
+          scratch.pushing[i]
+              ? start(i) + change(i) < -impulse_tolerance
+              : w0(i) + k.row(i).dot(change) + kCompliance * k(i, i) * change(i) < -speed_tolerance;
       if (scratch.wrong[i]) {
         ++wrong;
         last_wrong = i;
@@ -98,11 +110,13 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
     }
     if (wrong < fewest_wrong) {
       fewest_wrong = wrong;
-      block_rounds_left = kBlockRounds + 1;
+      block_rounds_left = kBlockRounds + 1;  // this round, and kBlockRounds more
     }
-    if (--block_rounds_left >= 0) {
+    if (block_rounds_left > 0) {
+      --block_rounds_left;
       for (Eigen::Index i = 0; i < n; ++i) scratch.pushing[i] ^= scratch.wrong[i];
     } else {
+      // Murty's rule needs one fixed order of the points to choose by: the last wrong one.
       scratch.pushing[last_wrong] ^= 1;
     }
   }

@@ -25,8 +25,10 @@ struct NormalLcpScratch {
 
 /// How solve_normal_lcp ended.
 struct NormalLcpResult {
-  bool solved;  ///< false: no solution within the round limit, or K not positive definite
-  int rounds;   ///< pushing sets tried (Cholesky factorisations of K restricted to them)
+  /// false: no solution within the round limit, a zero diagonal entry of K, or K restricted to
+  /// a pushing set not positive definite in floating point
+  bool solved;
+  int rounds;  ///< pushing sets tried (each a Cholesky factorisation unless it is empty)
 };
 
 /// The most pushing sets the engine lets solve_normal_lcp try, each a Cholesky factorisation of
@@ -40,15 +42,16 @@ inline constexpr int kNormalLcpMaxRounds = 16;
 ///   w = w₀ + K (λ − λ₀) ≥ 0,  λ ≥ 0,  λ · w = 0,
 /// w [m/s] being each point's normal velocity less its target, w₀ the current one at the current
 /// impulses λ₀ ≥ 0, and K [1/kg] the points' effective-mass matrix (symmetric, positive
-/// semi-definite; GD:impulse's denominators on its diagonal). A compliance of 1e-10 of each
-/// point's own diagonal entry, acting on λ − λ₀, makes K definite where points are redundant, so
-/// that λ is unique; the conditions hold with it to 1e-10 of the island's largest impulse and
-/// speed. (Where the points ask for more than the bodies can give, λ is large and the compliance
-/// lets the points close by 1e-10 K_ii λ_i.) Writes λ into
-/// `impulse` when solved. Block principal pivoting (Júdice and Pires) from the points that
-/// pushed (λ₀ > 0) or are not moving apart (w₀ ≤ 0): all points on the wrong side change sets
-/// at once while their number falls, one at a time (Murty's rule, which cannot cycle for a
-/// definite K) once it has not fallen for a few rounds; at most `max_rounds` rounds.
+/// semi-definite with a positive diagonal; GD:impulse's denominators on its diagonal). A
+/// compliance of 1e-10 of each point's own diagonal entry, acting on λ − λ₀, makes K definite
+/// where points are redundant, so that λ is unique: the conditions hold for K with it, to 1e-10
+/// of the island's largest impulse and speed. (Where the points ask for more than the bodies can
+/// give, λ is large and the compliance lets a point close by 1e-10 K_ii (λ_i − λ₀_i).) Writes
+/// λ into `impulse` when solved. Block principal pivoting (Júdice and Pires) from the points
+/// that pushed (λ₀ > 0) or are not moving apart (w₀ ≤ 0): all points on the wrong side change
+/// sets at once while their number falls and for 3 rounds after it last fell, then one at a time
+/// (Murty's rule, which cannot cycle for a definite K) until it falls below its best again; at
+/// most `max_rounds` rounds.
 NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
                                  const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
