@@ -36,9 +36,11 @@ Scene bounded(Scene scene, const SceneInputLimits& limits) {
 
 SceneInputOutcome run_scene_input(const std::string& text, const SceneInputLimits& limits) {
   try {
+    // parse_scene checks the settings as given, before bounded() cuts them; build_space checks
+    // the bodies, which bounded() leaves as they are.
     const Scene scene = parse_scene(text);
-    build_space(scene);
     if (scene.bodies.size() > limits.max_bodies || shape_count(scene) > limits.max_shapes) {
+      build_space(scene);
       return SceneInputOutcome::kRan;
     }
     const Scene run = bounded(scene, limits);

@@ -30,9 +30,9 @@ struct SceneInputLimits {
   int max_direct_points = 64;   ///< points of an island solved directly at most
 };
 
-/// Parses `text` as a scene file and builds its space, which checks every value as given; then,
-/// within `limits`, builds it again with its solver settings cut to the limits and runs it from
-/// t = 0 for at most limits.max_steps steps of its dt, writing the trajectory CSV to memory.
+/// Parses `text` as a scene file, checking every value as given, and builds its space; within
+/// `limits`, with its solver settings cut to the limits, and then runs it from t = 0 for at most
+/// limits.max_steps steps of its dt, writing the trajectory CSV to memory.
 /// Returns how it ended; any exception other than InputError and NumericalError propagates.
 SceneInputOutcome run_scene_input(const std::string& text, const SceneInputLimits& limits = {});
 

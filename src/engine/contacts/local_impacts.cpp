@@ -108,7 +108,6 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
                            WorldShapes& end, ContactSet& contacts, int& impacts,
                            std::vector<Impact>& log) {
   if (pending_.empty()) return true;
-  bool newly_with_impact = false;
   const Ballistic motion{start, acceleration};
   const double same_time = simultaneity(h);
   while (!pending_.empty() && impacts < settings_.max_impacts_per_step) {
@@ -150,13 +149,10 @@ bool LocalImpacts::resolve(double t, double h, MotionState& start,
       return changed(shapes_[e.pair.first]) || changed(shapes_[e.pair.second]);
     });
     if (!search_after(changed_, tau, h, motion, world_start, end)) return false;
-    for (BodyId b : changed_) {
-      newly_with_impact |= !(marks_[b] & kWithImpact);
-      marks_[b] = (marks_[b] & ~kChanged) | kWithImpact;
-    }
+    for (BodyId b : changed_) marks_[b] = (marks_[b] & ~kChanged) | kWithImpact;
   }
   if (!pending_.empty()) return false;
-  if (newly_with_impact) drop_contacts_with_impacts(contacts);
+  drop_contacts_with_impacts(contacts);
   return true;
 }
 

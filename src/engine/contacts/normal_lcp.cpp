@@ -17,6 +17,15 @@ constexpr double kRoundOff = 1e-10;
 // a (normal, not subnormal) tolerance.
 constexpr double kTiny = 1e-200;
 
+// Point i's speed w_i = w₀_i + (K + compliance) Δλ after the impulse changes `change` [m/s]: the
+// one problem, K with its compliance, that every round works on (on which Murty's rule cannot
+// cycle).
+double speed_after(const Eigen::Ref<const Eigen::MatrixXd>& k,
+                   const Eigen::Ref<const Eigen::VectorXd>& w0,
+                   const Eigen::Ref<const Eigen::VectorXd>& change, Eigen::Index i) {
+  return w0(i) + k.row(i).dot(change) + kCompliance * k(i, i) * change(i);
+}
+
 // Each point's Δλ when the points marked in scratch.pushing push (w = 0) and the others let go
 // (λ = 0), into scratch.change. Returns false if K restricted to the pushing points is not
 // positive definite.
@@ -36,7 +45,9 @@ bool solve_pushing_set(const Eigen::Ref<const Eigen::MatrixXd>& k,
   auto rhs = scratch.rhs.head(a);
   for (Eigen::Index r = 0; r < a; ++r) {
     const int i = scratch.pushing_rows[r];
-    rhs(r) = -(w0(i) + k.row(i).dot(change));
+    // The speed the free points' letting go leaves; the pushing points' changes, still 0 in
+    // `change`, are the unknowns.
+    rhs(r) = -speed_after(k, w0, change, i);
     for (Eigen::Index q = 0; q < a; ++q) k_pushing(r, q) = k(i, scratch.pushing_rows[q]);
     // A heap is often statically indeterminate (a box across two others: more points than the
     // bodies' vertical and turning freedoms), which makes K singular.
@@ -93,12 +104,8 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
     Eigen::Index wrong = 0;
     Eigen::Index last_wrong = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      // A free point's speed counts the compliance on its change too, so that every round
-      // works on the one problem with K + compliance, on which Murty's rule cannot cycle.
-      scratch.wrong[i] =
-          scratch.pushing[i]
-              ? start(i) + change(i) < -impulse_tolerance
-              : w0(i) + k.row(i).dot(change) + kCompliance * k(i, i) * change(i) < -speed_tolerance;
+      scratch.wrong[i] = scratch.pushing[i] ? start(i) + change(i) < -impulse_tolerance
+                                            : speed_after(k, w0, change, i) < -speed_tolerance;
       if (scratch.wrong[i]) {
         ++wrong;
         last_wrong = i;

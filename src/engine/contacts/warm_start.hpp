@@ -24,7 +24,12 @@ struct WarmStart {
     return (std::uint64_t{pair.first} << kShapeBits) | pair.second;
   }
 
-  /// The pair's key, then the features' (FeatureId::key): ordered as the contacts, by pair.
+  /// The key of a point: its pair's key (pair_key), then its features' (FeatureId::key).
+  static std::uint64_t key_of(std::uint64_t pair, std::uint16_t features) {
+    return pair << 16 | features;
+  }
+
+  /// key_of the point: ordered as the contacts, by pair.
   std::uint64_t key;
   double normal;   ///< N·s
   double tangent;  ///< N·s
