@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Writes the large shipped scenes, pyramid20.json and rain1000.json, into this folder (or into
-the folder given as the only argument: a test compares that output with the committed files).
+"""Writes the generated shipped scenes into this folder (or into the folder given as the only
+argument: a test compares that output with the committed files): the large ones, pyramid20.json
+and rain1000.json, and the contact scenes of the oracle (bodies resting, sliding, rolling,
+tipping, settling), whose placements on slopes are computed here.
 
 Positions are on regular grids (no randomness), so the files are reproducible; run
 `python3 scenes/generate.py` after changing this script and commit its output. One body per line
@@ -8,6 +10,7 @@ keeps the files small and their diffs readable. Standard library only.
 """
 
 import json
+import math
 import sys
 from pathlib import Path
 
@@ -81,6 +84,98 @@ def rain1000():
     }, bodies)
 
 
+def box(width, height, **surface):
+    return {"type": "box", "width": width, "height": height, **surface}
+
+
+def on_slope(angle, along, above):
+    """The point `along` metres up a slope through the origin at `angle` (rad) and `above` metres
+    off it, along its normal."""
+    return [along * math.cos(angle) - above * math.sin(angle),
+            along * math.sin(angle) + above * math.cos(angle)]
+
+
+def slope_scene(name, description, angle, body, duration=1.0):
+    """A static ramp 20 m long, 1 m thick, whose top face runs through the origin at `angle`,
+    and one body on it."""
+    ramp = {"name": "ramp", "type": "static", "angle": angle,
+            "position": on_slope(angle, 0.0, -0.5), "shapes": [box(20, 1, friction=body.pop("ramp_friction"))]}
+    write_scene(name, {"description": description, "gravity": GRAVITY, "dt": DT,
+                       "duration": duration, "output_dt": 0.05}, [ramp, body])
+
+
+def contact_scenes():
+    """The oracle's contact scenes with closed forms (docs/oracle.md), and a settling pile."""
+    ramp = math.radians(30)
+    slope_scene("ramp_slide.json",
+                "A 1 m x 0.5 m block released 2 m up a 30-degree ramp, friction 0.2 on both: it "
+                "slides down with a = g (sin 30 - 0.2 cos 30) = 3.206 m/s^2.",
+                ramp, {"name": "block", "angle": ramp, "position": on_slope(ramp, 2.0, 0.25),
+                       "shapes": [box(1, 0.5, friction=0.2)], "ramp_friction": 0.2})
+    slope_scene("disc_roll.json",
+                "A uniform disc of radius 0.5 m released 2 m up a 30-degree ramp, friction 0.6: "
+                "it rolls without slipping, a = 2/3 g sin 30 = 3.27 m/s^2 and omega = -v/r.",
+                ramp, {"name": "disc", "position": on_slope(ramp, 2.0, 0.5),
+                       "shapes": [{"type": "circle", "radius": 0.5, "friction": 0.6}],
+                       "ramp_friction": 0.6})
+    hill = math.radians(20)
+    slope_scene("static_friction.json",
+                "A 1 m box at rest on a 20-degree slope, friction 0.6 > tan 20 = 0.364: static "
+                "friction holds it where it is.",
+                hill, {"name": "box", "angle": hill, "position": on_slope(hill, 0.0, 0.5),
+                       "shapes": [box(1, 1, friction=0.6)], "ramp_friction": 0.6})
+    ground = {"name": "ground", "type": "static", "position": [0, -0.5],
+              "shapes": [box(20, 1, friction=0.6)]}
+    write_scene("box_drop.json", {
+        "description": "A 1 m box dropped flat from 1 m onto the ground, C_R = 0: it lands at "
+                       "t = sqrt(2/9.81) = 0.4515 s and stays at rest.",
+        "gravity": GRAVITY, "dt": DT, "duration": 1.0, "output_dt": 0.05,
+    }, [ground, {"name": "box", "position": [0, 1.5], "shapes": [box(1, 1, friction=0.6)]}])
+    write_scene("stack3.json", {
+        "description": "Three 1 m boxes stacked at rest on the ground, friction 0.6: they stay.",
+        "gravity": GRAVITY, "dt": DT, "duration": 2.0, "output_dt": 0.05,
+    }, [ground] + [{"name": f"box{k}", "position": [0, 0.5 + k],
+                    "shapes": [box(1, 1, friction=0.6)]} for k in range(3)])
+    write_scene("step_tip.json", {
+        "description": "A 1 m box on the edge of a step, its centre 0.3 m beyond the edge, "
+                       "friction 1: it tips over the edge, turning about it while it sticks "
+                       "(omega^2 = 2 m g (h0 - h) / I_edge).",
+        "gravity": GRAVITY, "dt": DT, "duration": 0.5, "output_dt": 0.025,
+    }, [{"name": "step", "type": "static", "position": [-2.5, -0.5],
+         "shapes": [box(5, 1, friction=1.0)]},
+        {"name": "box", "position": [0.3, 0.5], "shapes": [box(1, 1, friction=1.0)]}])
+    rows, pitch = 6, 1.05
+    bodies = [{"name": "ground", "type": "static", "position": [0, -0.5],
+               "shapes": [box(20, 1, friction=0.6)]}]
+    for row in range(rows):
+        count = rows - row
+        for column in range(count):
+            bodies.append({"name": f"box{row}_{column}",
+                           "position": [round((column - (count - 1) / 2) * pitch, 6), 0.5 + row],
+                           "shapes": [box(1, 1, friction=0.6)]})
+    write_scene("pyramid6.json", {
+        "description": "A pyramid of 21 unit boxes in 6 rows, 0.05 m apart, friction 0.6, on a "
+                       "static ground box: it should stand still.",
+        "gravity": GRAVITY, "dt": DT, "duration": 2.0, "output_dt": 0.05,
+    }, bodies)
+    discs = [{"name": "box", "type": "static", "position": [0, 0], "shapes": [
+        {"type": "segment", "a": [-3, 0], "b": [3, 0]},
+        {"type": "segment", "a": [-3, 0], "b": [-3, 12]},
+        {"type": "segment", "a": [3, 0], "b": [3, 12]}]}]
+    for k in range(50):
+        row, column = divmod(k, 5)
+        discs.append({"name": f"disc{k:02d}",
+                      "position": [-2.0 + column + 0.25 * (row % 2), 1.0 + 1.05 * row],
+                      "shapes": [{"type": "circle", "radius": 0.4}]})
+    write_scene("settle50.json", {
+        "description": "50 frictionless discs of radius 0.4 m (C_R = 0) dropped into a 6 m wide "
+                       "box: they settle into a heap. Chaotic: compare energy over time and the "
+                       "settled heap, not trajectories.",
+        "gravity": GRAVITY, "dt": DT, "duration": 3.0, "output_dt": 0.05,
+    }, discs)
+
+
 if __name__ == "__main__":
     pyramid20()
     rain1000()
+    contact_scenes()

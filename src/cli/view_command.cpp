@@ -42,12 +42,11 @@ int view(const ViewOptions& options) {
     space = build_space(scene);
     out = std::make_unique<PartialFile>(options.out);
     if (options.oracle) {
-      // Before the game run, which moves the space on; a scene outside the oracle's domain is
-      // bad input, as for `gamephysics oracle`.
+      // A scene outside the oracle's domain is bad input, as for `gamephysics oracle`.
       const OutputTimes instants(scene.duration, scene.output_dt);
       std::vector<double> times(instants.size());
       for (std::size_t k = 0; k < instants.size(); ++k) times[k] = instants[k];
-      oracle = verification::run_oracle(*space, times, oracle_settings);
+      oracle = verification::run_oracle(scene, times, oracle_settings);
     }
   } catch (const std::exception& e) {  // InputError, OracleDomainError
     std::cerr << "error: " << file << ": " << e.what() << "\n";

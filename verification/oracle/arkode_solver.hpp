@@ -17,6 +17,7 @@ class ArkodeSolver final : public OdeSolver {
 
   Stop advance(double t_stop, double& t) override;
   void restart(double t) override;
+  bool projects() const override { return true; }
   long steps() const override;
 
  private:
@@ -26,6 +27,9 @@ class ArkodeSolver final : public OdeSolver {
 
   std::unique_ptr<void, FreeMemory> memory_;
   long steps_before_restart_ = 0;  // ERKStepReInit sets ARKODE's own count back to 0
+
+  /// (Re)initialises ARKODE's root finding for the problem's root functions as armed now.
+  void arm_roots();
 };
 
 }  // namespace gp::verification

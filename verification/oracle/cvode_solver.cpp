@@ -1,6 +1,7 @@
 #include "verification/oracle/cvode_solver.hpp"
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_proj.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -26,7 +27,8 @@ void CvodeSolver::FreeNonlinearSolver::operator()(SUNNonlinearSolver solver) con
 CvodeSolver::CvodeSolver(Family family, const OracleOptions& options, OdeProblem& problem,
                          double t0, const double* y0)
     : OdeSolver(problem, y0, family == Family::Adams ? "cvode-adams" : "cvode-bdf",
-                options.max_steps) {
+                options.max_steps),
+      projects_(family == Family::Bdf) {
   void* memory = CVodeCreate(family == Family::Adams ? CV_ADAMS : CV_BDF, context_.get());
   if (memory == nullptr) throw std::bad_alloc();
   memory_.reset(memory);
@@ -47,12 +49,21 @@ CvodeSolver::CvodeSolver(Family family, const OracleOptions& options, OdeProblem
     check(CVodeSetLinearSolver(memory, linear_solver_.get(), matrix_.get()),
           "CVodeSetLinearSolver");
   }
-  if (problem.root_count() > 0) {
-    check(CVodeRootInit(memory, problem.root_count(), OdeProblem::roots), "CVodeRootInit");
-    check(CVodeSetRootDirection(memory, directions_.data()), "CVodeSetRootDirection");
-    // A pair just resolved starts at distance ~0: expected, not worth a warning.
-    check(CVodeSetNoInactiveRootWarn(memory), "CVodeSetNoInactiveRootWarn");
+  if (projects_) {
+    check(CVodeSetProjFn(memory, OdeProblem::project), "CVodeSetProjFn");
+    // The correction is exact to round-off, so the error estimate needs no projecting.
+    check(CVodeSetProjErrEst(memory, SUNFALSE), "CVodeSetProjErrEst");
   }
+  arm_roots();
+}
+
+void CvodeSolver::arm_roots() {
+  size_roots();
+  check(CVodeRootInit(memory_.get(), problem_.root_count(), OdeProblem::roots), "CVodeRootInit");
+  if (problem_.root_count() == 0) return;
+  check(CVodeSetRootDirection(memory_.get(), directions_.data()), "CVodeSetRootDirection");
+  // A root function just crossed starts at ~0: expected, not worth a warning.
+  check(CVodeSetNoInactiveRootWarn(memory_.get()), "CVodeSetNoInactiveRootWarn");
 }
 
 OdeSolver::Stop CvodeSolver::advance(double t_stop, double& t) {
@@ -78,6 +89,7 @@ OdeSolver::Stop CvodeSolver::advance(double t_stop, double& t) {
 void CvodeSolver::restart(double t) {
   steps_before_restart_ = steps();
   check(CVodeReInit(memory_.get(), t, y_.get()), "CVodeReInit");
+  arm_roots();
 }
 
 long CvodeSolver::steps() const {

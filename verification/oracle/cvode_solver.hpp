@@ -29,6 +29,7 @@ class CvodeSolver final : public OdeSolver {
 
   Stop advance(double t_stop, double& t) override;
   void restart(double t) override;
+  bool projects() const override { return projects_; }
   long steps() const override;
 
  private:
@@ -52,6 +53,10 @@ class CvodeSolver final : public OdeSolver {
   std::unique_ptr<std::remove_pointer_t<SUNNonlinearSolver>, FreeNonlinearSolver> nonlinear_solver_;
   std::unique_ptr<void, FreeMemory> memory_;
   long steps_before_restart_ = 0;  // CVodeReInit sets CVODE's own count back to 0
+  bool projects_;
+
+  /// (Re)initialises CVODE's root finding for the problem's root functions as armed now.
+  void arm_roots();
 };
 
 }  // namespace gp::verification

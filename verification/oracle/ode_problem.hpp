@@ -1,39 +1,46 @@
 #pragma once
-// What a SUNDIALS solver calls back: the right-hand side f(t, y) and the root functions g(t, y)
-// (one signed distance per watched pair of shapes). CVODE and ARKODE take callbacks of the same
-// C signatures, with the problem as their user data.
+// What a SUNDIALS solver calls back: the right-hand side f(t, y) of the hybrid system, its root
+// functions g(t, y) (the event watch), and the projection onto the active contacts. CVODE and
+// ARKODE take callbacks of the same C signatures, with the problem as their user data.
 
 #include <sundials/sundials_nvector.h>
 
 #include <exception>
 
-#include "verification/oracle/collision_watch.hpp"
-#include "verification/oracle/ode_system.hpp"
+#include "verification/oracle/hybrid/event_watch.hpp"
+#include "verification/oracle/hybrid/hybrid_system.hpp"
 
 namespace gp::verification {
 
 class OdeProblem {
  public:
   /// Both must outlive the problem.
-  OdeProblem(OdeSystem& system, CollisionWatch& watch) : system_(system), watch_(watch) {}
+  OdeProblem(oracle::HybridSystem& system, oracle::EventWatch& watch)
+      : system_(system), watch_(watch) {}
 
   std::size_t size() const { return system_.size(); }
+  /// The number of root functions, as the watch is armed now.
   int root_count() const { return static_cast<int>(watch_.size()); }
 
   /// CVRhsFn / ARKRhsFn: f(t, y) into ydot; `problem` is this.
   static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* problem);
-  /// CVRootFn / ARKRootFn: the signed distance of every watched pair into g.
+  /// CVRootFn / ARKRootFn: the watch's root functions into g.
   static int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* problem);
+  /// CVProjFn: the correction that puts y onto the active contacts' constraints.
+  static int project(sunrealtype t, N_Vector y, N_Vector correction, sunrealtype tolerance,
+                     N_Vector error, void* problem);
+  /// ARKPostProcessFn: y put onto the active contacts' constraints after each step.
+  static int project_in_place(sunrealtype t, N_Vector y, void* problem);
 
-  /// SUNDIALS is C: nothing may unwind through it. An exception thrown inside a callback (by a
-  /// user's force callback, say) is kept, the callback reports an unrecoverable failure, and the
-  /// solver driver calls this to rethrow it once SUNDIALS has returned.
+  /// SUNDIALS is C: nothing may unwind through it. An exception thrown inside a callback is
+  /// kept, the callback reports an unrecoverable failure, and the solver driver calls this to
+  /// rethrow it once SUNDIALS has returned.
   void rethrow_pending();
 
  private:
-  OdeSystem& system_;
-  CollisionWatch& watch_;
-  MotionState state_;  // scratch for roots()
+  oracle::HybridSystem& system_;
+  oracle::EventWatch& watch_;
+  oracle::Snapshot snapshot_;  // scratch for roots()
   std::exception_ptr pending_;
 };
 

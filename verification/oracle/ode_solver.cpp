@@ -13,11 +13,15 @@ namespace gp::verification {
 OdeSolver::OdeSolver(OdeProblem& problem, const double* y0, std::string name, long max_steps)
     : problem_(problem),
       y_(problem.size(), context_.get()),
-      crossed_(static_cast<std::size_t>(problem.root_count())),
-      directions_(crossed_.size(), -1),
       name_(std::move(name)),
       max_steps_(max_steps) {
   std::copy_n(y0, problem.size(), y_.data());
+  size_roots();
+}
+
+void OdeSolver::size_roots() {
+  crossed_.assign(static_cast<std::size_t>(problem_.root_count()), 0);
+  directions_.assign(crossed_.size(), -1);
 }
 
 void OdeSolver::after_step(double t) {

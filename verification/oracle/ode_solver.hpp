@@ -37,8 +37,13 @@ class OdeSolver {
   const std::vector<int>& crossed() const { return crossed_; }
 
   /// Starts afresh at time t [s] from values() (velocities changed by an impulse, which the
-  /// solver's history must not smooth over).
+  /// solver's history must not smooth over), with the problem's root functions as armed now.
   virtual void restart(double t) = 0;
+
+  /// True when the solver puts its solution onto the active contacts after every step (CVODE's
+  /// projection, BDF only; ARKODE's post-step function); false for Adams, whose solution the
+  /// driver projects where it stops.
+  virtual bool projects() const = 0;
 
   /// Steps taken since the start [1].
   virtual long steps() const = 0;
@@ -46,6 +51,9 @@ class OdeSolver {
  protected:
   /// The solver starts from y0 (problem.size() values); `name` names it in messages.
   OdeSolver(OdeProblem& problem, const double* y0, std::string name, long max_steps);
+
+  /// Sizes the root bookkeeping for the problem's root functions as armed now.
+  void size_roots();
 
   /// After each step: rethrows what a callback threw, and fails beyond max_steps steps.
   void after_step(double t);
@@ -67,7 +75,7 @@ class OdeSolver {
   OdeProblem& problem_;
   SerialVector y_;
   std::vector<int> crossed_;
-  std::vector<int> directions_;  // -1 per root function: falling distances only
+  std::vector<int> directions_;  // -1 per root function: only falling ones count
   std::string name_;
   long max_steps_;
   std::string error_;

@@ -9,10 +9,9 @@
 #include <utility>
 
 #include "gamephysics/models/dd/angular_displacement.hpp"
-#include "verification/oracle/collision_watch.hpp"
+#include "verification/oracle/hybrid/contact_events.hpp"
 #include "verification/oracle/ode_problem.hpp"
 #include "verification/oracle/ode_solver.hpp"
-#include "verification/oracle/ode_system.hpp"
 #include "verification/oracle/zeno_guard.hpp"
 
 namespace gp::verification {
@@ -25,22 +24,23 @@ constexpr std::array<std::pair<OracleMethod, std::string_view>, 3> kMethodNames{
     {OracleMethod::ArkodeErk, "arkode-erk"},
 }};
 
-void validate(const OracleOptions& o, std::span<const double> times, double t0) {
+void validate(const OracleOptions& o, std::span<const double> times) {
   const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   if (!positive(o.rtol)) throw std::invalid_argument("oracle: rtol must be finite and > 0");
   if (!positive(o.atol)) throw std::invalid_argument("oracle: atol must be finite and > 0");
-  if (!positive(o.contact_tolerance)) {
-    throw std::invalid_argument("oracle: contact_tolerance must be finite and > 0");
+  if (!positive(o.contact_tolerance) || !positive(o.rest_speed) || !positive(o.speed_tolerance)) {
+    throw std::invalid_argument(
+        "oracle: contact_tolerance, rest_speed and speed_tolerance must be finite and > 0");
   }
   if (o.max_events < 1 || o.zeno_events < 2 || !(o.zeno_window >= 0.0) || o.max_steps < 1) {
     throw std::invalid_argument(
         "oracle: max_events >= 1, zeno_events >= 2, zeno_window >= 0 and max_steps >= 1 needed");
   }
-  double previous = t0;
+  double previous = 0.0;
   for (double t : times) {
     if (!std::isfinite(t) || t < previous) {
       throw std::invalid_argument(
-          "oracle: output times must be finite, non-decreasing and not before the space's time");
+          "oracle: output times must be finite, non-decreasing and not before 0");
     }
     previous = t;
   }
@@ -56,13 +56,13 @@ bool reached(double t, double target) {
          4.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), std::abs(target));
 }
 
-std::vector<BodyState> report(const MotionState& s) {
+std::vector<BodyState> report(std::span<const oracle::Motion> motions) {
   std::vector<BodyState> states;
-  states.reserve(s.position.size());
-  for (std::size_t j = 0; j < s.position.size(); ++j) {
+  states.reserve(motions.size());
+  for (const oracle::Motion& m : motions) {
     // y carries ϕ unreduced; the SRS output constraint wants it in [0, 2π).
-    states.push_back({s.position[j], dd::rotated_orientation(s.angle[j], 0.0), s.velocity[j],
-                      s.angular_velocity[j]});
+    states.push_back(
+        {m.position, dd::rotated_orientation(m.angle, 0.0), m.velocity, m.angular_velocity});
   }
   return states;
 }
@@ -83,57 +83,68 @@ std::optional<OracleMethod> oracle_method_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-OracleResult run_oracle(const Space& space, std::span<const double> output_times,
+OracleResult run_oracle(const Scene& scene, std::span<const double> output_times,
                         const OracleOptions& options) {
-  const double t0 = space.time();
-  validate(options, output_times, t0);
-  OdeSystem system(space);
-  CollisionWatch watch(space, options);
+  validate(options, output_times);
+  const oracle::World world = oracle::build_world(scene);
+  oracle::HybridSystem system(world);
+  oracle::EventWatch watch(world, options.contact_tolerance);
+  oracle::ContactEvents contacts(system, watch, options);
   ZenoGuard zeno(options);
   OracleResult result;
   result.times.assign(output_times.begin(), output_times.end());
+  std::vector<oracle::Motion> motions(system.states().body_count());
 
   std::vector<double> y(system.size());
-  system.initial_values(y.data());
-  MotionState s;
-  Accelerations a;
-  system.state_at(t0, y.data(), s);
-  system.accelerations(t0, s, a);
-  watch.require_clear(t0, s, a, "at the start");
+  system.states().initial_values(y.data());
+  double t = 0.0;
+  contacts.start(t, y.data(), result.events);
+  system.states().motions_at(t, y.data(), motions);
+  watch.arm(system.contacts(), motions);
   if (system.size() == 0) {
     // Nothing dynamic: every body moves in closed form, and nothing can collide.
-    for (double t : output_times) {
-      system.state_at(t, y.data(), s);
-      result.states.push_back(report(s));
+    for (double t_out : output_times) {
+      system.states().motions_at(t_out, y.data(), motions);
+      result.states.push_back(report(motions));
     }
     return result;
   }
 
   OdeProblem problem(system, watch);
-  const auto solver = make_ode_solver(options, problem, t0, y.data());
-  double t = t0;
+  const auto solver = make_ode_solver(options, problem, t, y.data());
+  oracle::Snapshot snapshot;
   for (double t_out : output_times) {
     while (!reached(t, t_out)) {
-      system.state_at(t, solver->values(), s);
-      system.accelerations(t, s, a);
-      const double t_stop = std::min(t_out, t + std::max(watch.horizon(s, a), kLeastStep * t));
-      if (solver->advance(t_stop, t) == OdeSolver::Stop::Reached) continue;
-      system.state_at(t, solver->values(), s);
-      const std::size_t first_new = result.events.size();
-      watch.resolve(t, solver->crossed(), s, result.events);
-      for (std::size_t k = first_new; k < result.events.size(); ++k) {
-        zeno.record(t, describe_pair(space, result.events[k].body_a, result.events[k].body_b));
+      system.evaluate(t, solver->values(), snapshot);
+      const double t_stop = std::min(t_out, t + std::max(watch.horizon(snapshot), kLeastStep * t));
+      if (solver->advance(t_stop, t) == OdeSolver::Stop::Reached) {
+        if (!solver->projects() && !system.contacts().empty()) {
+          system.project(t, solver->values());
+          solver->restart(t);
+        }
+        continue;
       }
-      system.accelerations(t, s, a);
-      watch.require_clear(t, s, a, "after an impact");
-      system.values_of(s, solver->values());
+      const std::size_t first_new = result.events.size();
+      contacts.handle(t, solver->values(), solver->crossed(), result.events);
+      for (std::size_t k = first_new; k < result.events.size(); ++k) {
+        zeno.record(t, contacts.describe(result.events[k].body_a, result.events[k].body_b));
+      }
+      if (first_new == result.events.size()) {
+        // Changes of contact without an impact can chatter too (stick, slip, stick, ...).
+        zeno.record(t, "the contacts");
+        ++result.contact_changes;
+      }
+      system.states().motions_at(t, solver->values(), motions);
+      watch.arm(system.contacts(), motions);
       solver->restart(t);
     }
-    system.state_at(t_out, solver->values(), s);
-    watch.require_apart(t_out, s);
-    result.states.push_back(report(s));
+    contacts.require_apart(t_out, solver->values());
+    contacts.note_drift(t_out, solver->values());
+    system.states().motions_at(t_out, solver->values(), motions);
+    result.states.push_back(report(motions));
   }
   result.steps = solver->steps();
+  result.largest_drift = contacts.largest_drift();
   return result;
 }
 

@@ -1,9 +1,14 @@
 #pragma once
-// The SUNDIALS oracle: an independent, high-accuracy solution of a Space's equations of motion,
-// to check the game integrators against. It integrates the whole ODE system of the space —
-// dp/dt = v, dϕ/dt = ω with dv/dt, dω/dt from the space's own ForceModel (IM:transMot,
-// IM:rotMot) — with an adaptive solver at tight tolerances, and treats every collision as an
-// event located to solver precision and resolved by IM:col2D.
+// The SUNDIALS oracle: an independent, high-accuracy solution of a scene's equations of motion,
+// to check the game engine against. It reads the scene (the scene library, which it shares with
+// the engine: reading is data, not physics) and computes everything else itself: mass
+// properties through the DD models, forces through the TM and GD models, its own contact
+// geometry (verification/oracle/model, geometry). It integrates the rigid bodies as a hybrid
+// system: smooth motion between events with the forces of the active contacts (unilateral, with
+// Coulomb friction), found at the acceleration level; events located by root finding to solver
+// precision: contact onset, lift-off, stick to slip, slip to stick, a vertex leaving its edge;
+// impacts resolved by IM:col2D (or Newton's law at several points at once). It never includes
+// or links the engine (src/engine); the build enforces that (verification/oracle/CMakeLists.txt).
 
 #include <cstddef>
 #include <optional>
@@ -11,7 +16,8 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/space.hpp"
+#include "scene/body.hpp"
+#include "scene/scene.hpp"
 #include "verification/oracle/domain_error.hpp"
 
 namespace gp::verification {
@@ -31,14 +37,21 @@ std::optional<OracleMethod> oracle_method_from_name(std::string_view name);
 
 struct OracleOptions {
   OracleMethod method = OracleMethod::CvodeAdams;
-  double rtol = 1e-10;  ///< relative tolerance [1], > 0; down to 1e-12 is meaningful
+  double rtol = 1e-12;  ///< relative tolerance [1], > 0; down to 1e-14 is meaningful
   /// Absolute tolerance of every component (m, rad, m/s, rad/s), > 0.
-  double atol = 1e-10;
-  /// m, ≥ 0: shapes closer than this count as touching. A pair touching at the start or after an
-  /// impact must be separating fast enough to get farther apart than this (else: resting contact).
+  double atol = 1e-12;
+  /// m, > 0: shapes closer than this at an event touch; an overlap deeper than this at an output
+  /// instant is an impact the oracle missed, and fails the run.
   double contact_tolerance = 1e-9;
+  /// m/s, > 0: an arrival slower than this ends without a bounce (C_R taken as 0) and the
+  /// contact holds; a bounce this slow would rise v²/2g ≈ 5e-10 m under Earth's gravity. It
+  /// is also what ends a Zeno sequence of ever smaller bounces.
+  double rest_speed = 1e-4;
+  /// m/s, > 0: a contact point moving apart or slipping slower than this is at rest (round-off
+  /// of the impulses and projections, not motion).
+  double speed_tolerance = 1e-9;
   /// Most impacts in a run (a bound on the work, and the first guard against Zeno sequences).
-  std::size_t max_events = 1000;
+  std::size_t max_events = 10000;
   /// A Zeno sequence: `zeno_events` impacts within `zeno_window` [s].
   std::size_t zeno_events = 50;
   double zeno_window = 1e-6;
@@ -46,41 +59,35 @@ struct OracleOptions {
   long max_steps = 10'000'000;
 };
 
-/// An impact resolved at its time of contact (IM:col2D).
+/// An impact resolved at its time of contact (IM:col2D, or Newton's law at several points).
 struct OracleEvent {
   double time;  ///< t_c [s]
-  BodyId body_a;
-  BodyId body_b;
+  std::size_t body_a;
+  std::size_t body_b;
   Vec2 normal;     ///< unit, from B towards A
-  Vec2 point;      ///< m, world: the contact point (the midpoint of an edge-to-edge contact)
+  Vec2 point;      ///< m, world: the contact point
   double impulse;  ///< j ≥ 0 [N·s], on A along the normal (−j n on B)
 };
 
 struct OracleResult {
   std::vector<double> times;                   ///< s: the output instants asked for
   std::vector<std::vector<BodyState>> states;  ///< states[k][body]: every body at times[k]
-  std::vector<OracleEvent> events;             ///< in time order
-  long steps = 0;                              ///< solver steps taken, for the curious
+  std::vector<OracleEvent> events;             ///< impacts, in time order
+  long contact_changes = 0;  ///< events that changed the contacts without an impulse
+  long steps = 0;            ///< solver steps taken, for the curious
+  /// m: the largest |gap| of an active contact at an output instant or event (the drift).
+  double largest_drift = 0.0;
 };
 
-/// Integrates `space` from space.time() to the last of `output_times` (non-decreasing, each ≥
-/// space.time(), in s) and returns the state of every body at each of them, orientation in
-/// [0, 2π). Dynamic bodies follow the ODE; kinematic bodies move at their constant velocities;
-/// static bodies stay put. Every pair of shapes of different bodies, one of them dynamic, is
-/// watched: when its signed distance falls to zero while the pair approaches, IM:col2D is applied
-/// at the contact point and normal of gp::collide (one point; the midpoint of two), with
-/// C_R = max of the two shapes' restitutions and no resting threshold, and the integration
-/// restarts from the new velocities. IM:col2D is frictionless: an impact of shapes with friction
-/// whose contact points slide is refused.
-/// The solver is stopped often enough that no pair can pass through another between two looks
-/// of the root finder (CollisionWatch::horizon); only a grazing impact, whose overlap is shorter
-/// than a tenth of the shapes' half-thicknesses, can be missed, and then an overlap at an output
-/// instant is reported. rtol bounds the error of each step: over a long run the global error is
-/// typically 10 to 1000 times rtol (a period of a circular orbit at rtol 1e-12: 1e-9 relative by
-/// Adams, 1e-8 by ERK; 1e-14 brings both under 1e-9). The space is not modified.
-/// Throws OracleDomainError when the scene leaves the oracle's domain (see OracleDomainError),
-/// std::invalid_argument for bad options or output times.
-OracleResult run_oracle(const Space& space, std::span<const double> output_times,
+/// Integrates the bodies of `scene` from t = 0 to the last of `output_times` (non-decreasing,
+/// each ≥ 0, in s) and returns the state of every body at each of them: centre of mass,
+/// orientation in [0, 2π), velocities. Static bodies stay put, kinematic bodies move at their
+/// constant velocities. Touching shapes at the start are in contact. Throws OracleDomainError
+/// when the scene leaves the oracle's domain (an impact with friction while sliding, a contact
+/// problem with no solution, a Zeno sequence, a solver failure, an overlap it missed),
+/// std::invalid_argument for bad options or output times, and InputError for bodies the SRS
+/// constraints refuse.
+OracleResult run_oracle(const Scene& scene, std::span<const double> output_times,
                         const OracleOptions& options = {});
 
 }  // namespace gp::verification

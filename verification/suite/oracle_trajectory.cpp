@@ -6,9 +6,8 @@ namespace gp::verification {
 
 Trajectory run_oracle_trajectory(const Scene& scene, std::span<const double> times,
                                  const OracleOptions& options) {
-  const auto space = build_space(scene);
   const std::clock_t start = std::clock();
-  OracleResult result = run_oracle(*space, times, options);
+  OracleResult result = run_oracle(scene, times, options);
   Trajectory t;
   t.cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
   t.times = std::move(result.times);

@@ -9,7 +9,7 @@
 namespace gp::verification {
 
 /// The scene integrated by the SUNDIALS oracle to the given instants [s]. Throws
-/// OracleDomainError for a scene with persistent contact.
+/// OracleDomainError for a scene outside the oracle's domain.
 Trajectory run_oracle_trajectory(const Scene& scene, std::span<const double> times,
                                  const OracleOptions& options);
 

@@ -1,0 +1,202 @@
+#include "verification/oracle/hybrid/contact_events.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "verification/oracle/contact/contact_modes.hpp"
+#include "verification/oracle/contact/impacts.hpp"
+#include "verification/oracle/contact/projection.hpp"
+
+namespace gp::oracle {
+
+using verification::message_number;
+using verification::OracleDomainError;
+using verification::OracleEvent;
+
+namespace {
+
+Pose pose_of(const Motion& m) {
+  return {m.position, m.angle};
+}
+
+std::vector<ContactKinematics> kinematics_of(std::span<const ActiveContact> contacts,
+                                             std::span<const Motion> motions) {
+  std::vector<ContactKinematics> k;
+  for (const ActiveContact& c : contacts) {
+    k.push_back(contact_kinematics(c, motions[c.first], motions[c.second]));
+  }
+  return k;
+}
+
+}  // namespace
+
+ContactEvents::ContactEvents(HybridSystem& system, const EventWatch& watch,
+                             const verification::OracleOptions& options)
+    : system_(system), watch_(watch), options_(options) {}
+
+std::string ContactEvents::describe(std::size_t a, std::size_t b) const {
+  const World& w = system_.world();
+  return "bodies '" + w.bodies[a].name + "' and '" + w.bodies[b].name + "'";
+}
+
+void ContactEvents::detect(std::size_t p, std::span<const Motion> motions,
+                           std::vector<ActiveContact>& contacts) const {
+  const World& w = system_.world();
+  const HullPair& pair = watch_.pairs()[p];
+  const ContactGeometry g =
+      contact_geometry(w.bodies[pair.body_a].hulls[pair.hull_a], pose_of(motions[pair.body_a]),
+                       w.bodies[pair.body_b].hulls[pair.hull_b], pose_of(motions[pair.body_b]),
+                       options_.contact_tolerance);
+  for (const ContactPoint& point : g.points) {
+    if (point.separation > options_.contact_tolerance) continue;
+    const ActiveContact c = make_active_contact(w, pair, p, point.feature);
+    const bool known = std::any_of(contacts.begin(), contacts.end(),
+                                   [&](const ActiveContact& o) { return same_contact(o, c); });
+    if (!known) contacts.push_back(c);
+  }
+}
+
+void ContactEvents::start(double t, double* y, std::vector<OracleEvent>& impacts) {
+  std::vector<Motion> motions(system_.states().body_count());
+  system_.states().motions_at(t, y, motions);
+  require_apart(t, y);
+  std::vector<ActiveContact> candidates;
+  for (std::size_t p = 0; p < watch_.pairs().size(); ++p) {
+    if (watch_.distance(p, motions) <= options_.contact_tolerance) detect(p, motions, candidates);
+  }
+  settle(t, motions, std::move(candidates), y, impacts);
+}
+
+void ContactEvents::handle(double t, double* y, std::span<const int> crossed,
+                           std::vector<OracleEvent>& impacts) {
+  std::vector<Motion> motions(system_.states().body_count());
+  system_.states().motions_at(t, y, motions);
+  const std::vector<ActiveContact>& before = system_.contacts();
+  // Where the root finder stopped, the solution is interpolated between two projected steps:
+  // back onto the constraints first, so that their drift is not taken for separation or slip.
+  project_onto_contacts(system_.world(), before, motions);
+  std::vector<bool> dropped(before.size(), false);
+  std::vector<ActiveContact> candidates = before;
+  std::vector<std::size_t> redetect;
+  for (std::size_t r = 0; r < crossed.size(); ++r) {
+    if (crossed[r] == 0) continue;
+    const Root& root = watch_.root(r);
+    switch (root.kind) {
+      case RootKind::Approach:
+        redetect.push_back(root.index);
+        break;
+      case RootKind::LiftOff:
+        dropped[root.index] = true;
+        break;
+      case RootKind::StickLimit:
+        // The friction reached +μ f_n (side 0) or −μ f_n: the contact slips against it.
+        candidates[root.index].mode = ContactMode::Sliding;
+        candidates[root.index].slip_sign = root.detail == 0 ? -1 : 1;
+        break;
+      case RootKind::SlipStop:
+        candidates[root.index].mode = ContactMode::Sticking;
+        candidates[root.index].slip_sign = 0;
+        break;
+      case RootKind::OffEdge:
+      case RootKind::OffCorner:
+      case RootKind::Landing:
+        redetect.push_back(before[root.index].pair);
+        break;
+    }
+  }
+  std::vector<ActiveContact> kept;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const bool redone =
+        std::find(redetect.begin(), redetect.end(), candidates[i].pair) != redetect.end();
+    if (!dropped[i] && !redone) kept.push_back(candidates[i]);
+  }
+  for (std::size_t p : redetect) detect(p, motions, kept);
+  settle(t, motions, std::move(kept), y, impacts);
+}
+
+void ContactEvents::settle(double t, std::vector<Motion>& motions,
+                           std::vector<ActiveContact> candidates, double* y,
+                           std::vector<OracleEvent>& impacts) {
+  const World& w = system_.world();
+  std::vector<ContactKinematics> k = kinematics_of(candidates, motions);
+  const bool approaching = std::any_of(k.begin(), k.end(), [&](const ContactKinematics& ki) {
+    return ki.gap_rate < -options_.speed_tolerance;
+  });
+  if (approaching) {
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (k[i].gap_rate < -options_.rest_speed && candidates[i].friction > 0.0 &&
+          std::abs(k[i].slip) > options_.speed_tolerance) {
+        throw OracleDomainError(describe(candidates[i].first, candidates[i].second) +
+                                    " collide with friction while sliding (slip " +
+                                    message_number(k[i].slip) +
+                                    " m/s); the oracle's impacts are frictionless (IM:col2D)",
+                                t);
+      }
+    }
+    std::vector<Vec2> velocity;
+    std::vector<double> angular_velocity;
+    for (const Motion& m : motions) {
+      velocity.push_back(m.velocity);
+      angular_velocity.push_back(m.angular_velocity);
+    }
+    const std::vector<double> p =
+        resolve_impacts(w, candidates, k, options_.rest_speed, velocity, angular_velocity);
+    for (std::size_t b = 0; b < motions.size(); ++b) {
+      motions[b].velocity = velocity[b];
+      motions[b].angular_velocity = angular_velocity[b];
+    }
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (p[i] > 0.0) {
+        impacts.push_back(
+            {t, candidates[i].first, candidates[i].second, k[i].normal, k[i].point, p[i]});
+      }
+    }
+    k = kinematics_of(candidates, motions);
+  }
+  std::vector<ActiveContact> touching;
+  std::vector<ContactKinematics> touching_k;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (k[i].gap_rate > options_.speed_tolerance) continue;  // separating
+    touching.push_back(candidates[i]);
+    touching_k.push_back(k[i]);
+  }
+  std::vector<Vec2> linear(motions.size(), Vec2::Zero());
+  std::vector<double> angular(motions.size(), 0.0);
+  applied_accelerations(w, motions, linear, angular);
+  if (!choose_contact_modes(w, touching, touching_k, linear, angular, options_.speed_tolerance)) {
+    throw OracleDomainError(
+        "the contact forces have no solution (a frictional paradox of Painlevé's kind)", t);
+  }
+  largest_drift_ = std::max(largest_drift_, project_onto_contacts(w, touching, motions));
+  system_.set_contacts(std::move(touching));
+  system_.states().values_of(motions, y);
+}
+
+void ContactEvents::note_drift(double t, const double* y) {
+  std::vector<Motion> motions(system_.states().body_count());
+  system_.states().motions_at(t, y, motions);
+  for (const ContactKinematics& k : kinematics_of(system_.contacts(), motions)) {
+    largest_drift_ = std::max(largest_drift_, std::abs(k.gap));
+  }
+}
+
+void ContactEvents::require_apart(double t, const double* y) const {
+  std::vector<Motion> motions(system_.states().body_count());
+  system_.states().motions_at(t, y, motions);
+  std::vector<bool> in_contact(watch_.pairs().size(), false);
+  for (const ActiveContact& c : system_.contacts()) in_contact[c.pair] = true;
+  for (std::size_t p = 0; p < watch_.pairs().size(); ++p) {
+    if (in_contact[p]) continue;
+    const double d = watch_.distance(p, motions);
+    if (d < -options_.contact_tolerance) {
+      const HullPair& pair = watch_.pairs()[p];
+      throw OracleDomainError(describe(pair.body_a, pair.body_b) + " overlap by " +
+                                  message_number(-d) +
+                                  " m: the oracle needs them apart (or an impact it could "
+                                  "not locate: a grazing contact)",
+                              t);
+    }
+  }
+}
+
+}  // namespace gp::oracle

@@ -1,0 +1,212 @@
+#include "verification/oracle/hybrid/event_watch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gp::oracle {
+
+namespace {
+
+// The share of two hulls' half-thicknesses a pair may move into each other between two looks
+// of the root finder: smaller costs more stops near contacts, larger lets grazing impacts slip by.
+constexpr double kMarginShare = 0.1;
+
+// m: the distance from the hull's centroid to its nearest side, plus its rounding.
+double half_thickness(const Hull& h) {
+  if (h.vertices.size() < 3) return h.radius;
+  Vec2 centroid = Vec2::Zero();
+  for (const Vec2& v : h.vertices) centroid += v / static_cast<double>(h.vertices.size());
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < h.vertices.size(); ++i) {
+    const Vec2 n = edge_normal(h.vertices, static_cast<int>(i));
+    nearest = std::min(nearest, (h.vertices[i] - centroid).dot(n));
+  }
+  return nearest + h.radius;
+}
+
+// m: the farthest point of the hull from its body's centre of mass.
+double reach(const Hull& h) {
+  double r = 0.0;
+  for (const Vec2& v : h.vertices) r = std::max(r, v.norm());
+  return r + h.radius;
+}
+
+Pose pose_of(const Motion& m) {
+  return {m.position, m.angle};
+}
+
+// The kinematics of `c` if its first body's vertex were vertex `v` of its hull instead.
+ContactKinematics at_vertex(const World& world, ActiveContact c, int v, std::span<const Motion> m) {
+  c.vertex = world.bodies[c.first].hulls[c.first_hull].vertices[static_cast<std::size_t>(v)];
+  return contact_kinematics(c, m[c.first], m[c.second]);
+}
+
+// sin of the angle by which `normal` (outward at vertex v of `hull`, world) is inside the
+// vertex's normal cone, on side 0 (the edge before v) or 1 (the edge from v).
+double inside_corner(const Hull& hull, int v, const Motion& body, const Vec2& normal, int side) {
+  const auto n = static_cast<int>(hull.vertices.size());
+  const Vec2 local =
+      side == 0 ? edge_normal(hull.vertices, (v + n - 1) % n) : edge_normal(hull.vertices, v);
+  const double c = std::cos(body.angle);
+  const double s = std::sin(body.angle);
+  const Vec2 edge(c * local.x() - s * local.y(), s * local.x() + c * local.y());
+  return side == 0 ? cross(edge, normal) : cross(normal, edge);
+}
+
+// Whether vertex `v` of the first body of contact `c` projects onto the contact's edge at
+// `motions`: only such a vertex can land on it; one beside the edge's extent would cross its
+// line without touching it.
+bool faces_edge(const World& world, const ActiveContact& c, int v,
+                std::span<const Motion> motions) {
+  const ContactKinematics k = at_vertex(world, c, v, motions);
+  return k.along_edge >= 0.0 && k.along_edge <= k.edge_length;
+}
+
+}  // namespace
+
+EventWatch::EventWatch(const World& world, double end_tolerance)
+    : world_(world), end_tolerance_(end_tolerance) {
+  for (std::size_t a = 0; a < world.bodies.size(); ++a) {
+    for (std::size_t b = a + 1; b < world.bodies.size(); ++b) {
+      if (world.bodies[a].type != BodyType::Dynamic && world.bodies[b].type != BodyType::Dynamic) {
+        continue;
+      }
+      for (std::size_t i = 0; i < world.bodies[a].hulls.size(); ++i) {
+        for (std::size_t j = 0; j < world.bodies[b].hulls.size(); ++j) {
+          const Hull& ha = world.bodies[a].hulls[i];
+          const Hull& hb = world.bodies[b].hulls[j];
+          const double margin = kMarginShare * (half_thickness(ha) + half_thickness(hb));
+          if (margin <= 0.0) continue;
+          pairs_.push_back({a, i, b, j, margin});
+          reach_.push_back(reach(ha));
+          reach_.push_back(reach(hb));
+        }
+      }
+    }
+  }
+  in_contact_.assign(pairs_.size(), false);
+}
+
+void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Motion> motions) {
+  roots_.clear();
+  std::fill(in_contact_.begin(), in_contact_.end(), false);
+  for (const ActiveContact& c : contacts) in_contact_[c.pair] = true;
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    if (!in_contact_[p]) roots_.push_back({RootKind::Approach, p, 0});
+  }
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ActiveContact& c = contacts[i];
+    roots_.push_back({RootKind::LiftOff, i, 0});
+    if (c.mode == ContactMode::Sticking) {
+      roots_.push_back({RootKind::StickLimit, i, 0});
+      roots_.push_back({RootKind::StickLimit, i, 1});
+    } else if (c.mode == ContactMode::Sliding) {
+      roots_.push_back({RootKind::SlipStop, i, 0});
+    }
+    if (c.on_edge) {
+      // A vertex at an end of its edge (a box on another, corner on corner) is not watched
+      // leaving it there: the root function would start at zero and chatter on round-off.
+      const ContactKinematics k = contact_kinematics(c, motions[c.first], motions[c.second]);
+      if (k.along_edge > end_tolerance_) roots_.push_back({RootKind::OffEdge, i, 0});
+      if (k.edge_length - k.along_edge > end_tolerance_) {
+        roots_.push_back({RootKind::OffEdge, i, 1});
+      }
+      const auto& vertices = world_.bodies[c.first].hulls[c.first_hull].vertices;
+      for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
+        const bool active = std::any_of(contacts.begin(), contacts.end(), [&](const auto& o) {
+          return o.pair == c.pair && o.first == c.first && o.on_edge &&
+                 o.second_feature == c.second_feature && o.first_vertex == v;
+        });
+        if (!active && faces_edge(world_, c, v, motions)) {
+          roots_.push_back({RootKind::Landing, i, v});
+        }
+      }
+    } else {
+      for (int side = 0; side < 2; ++side) {
+        if (world_.bodies[c.first].hulls[c.first_hull].vertices.size() >= 2 ||
+            world_.bodies[c.second].hulls[c.second_hull].vertices.size() >= 2) {
+          roots_.push_back({RootKind::OffCorner, i, side});
+        }
+      }
+    }
+  }
+}
+
+double EventWatch::distance(std::size_t p, std::span<const Motion> motions) const {
+  const HullPair& pair = pairs_[p];
+  return signed_distance(
+      world_.bodies[pair.body_a].hulls[pair.hull_a], pose_of(motions[pair.body_a]),
+      world_.bodies[pair.body_b].hulls[pair.hull_b], pose_of(motions[pair.body_b]));
+}
+
+void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> contacts,
+                          double* g) const {
+  for (std::size_t r = 0; r < roots_.size(); ++r) {
+    const Root& root = roots_[r];
+    if (root.kind == RootKind::Approach) {
+      g[r] = distance(root.index, s.motions);
+      continue;
+    }
+    const ActiveContact& c = contacts[root.index];
+    const ContactKinematics& k = s.kinematics[root.index];
+    const ContactForce& f = s.forces[root.index];
+    switch (root.kind) {
+      case RootKind::LiftOff:
+        g[r] = f.normal;
+        break;
+      case RootKind::StickLimit:
+        g[r] = c.friction * f.normal - (root.detail == 0 ? f.tangent : -f.tangent);
+        break;
+      case RootKind::SlipStop:
+        g[r] = c.slip_sign * k.slip;
+        break;
+      case RootKind::OffEdge:
+        g[r] = root.detail == 0 ? k.along_edge : k.edge_length - k.along_edge;
+        break;
+      case RootKind::Landing:
+        g[r] = at_vertex(world_, c, root.detail, s.motions).gap;
+        break;
+      case RootKind::OffCorner: {
+        // The corner is the second's vertex (its outward normal is n) or else the first's (−n).
+        const Hull& second = world_.bodies[c.second].hulls[c.second_hull];
+        g[r] = second.vertices.size() >= 2
+                   ? inside_corner(second, c.second_feature, s.motions[c.second], k.normal,
+                                   root.detail)
+                   : inside_corner(world_.bodies[c.first].hulls[c.first_hull], c.first_vertex,
+                                   s.motions[c.first], -k.normal, root.detail);
+        break;
+      }
+      case RootKind::Approach:
+        break;
+    }
+  }
+}
+
+double EventWatch::horizon(const Snapshot& s) const {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    if (in_contact_[p]) continue;
+    const HullPair& pair = pairs_[p];
+    const auto bound = [&](std::size_t body, double r, bool acceleration) {
+      const Motion& m = s.motions[body];
+      return acceleration
+                 ? s.linear[body].norm() +
+                       (std::abs(s.angular[body]) + m.angular_velocity * m.angular_velocity) * r
+                 : m.velocity.norm() + std::abs(m.angular_velocity) * r;
+    };
+    const double ra = reach_[2 * p];
+    const double rb = reach_[2 * p + 1];
+    const double speed = bound(pair.body_a, ra, false) + bound(pair.body_b, rb, false);
+    const double acceleration = bound(pair.body_a, ra, true) + bound(pair.body_b, rb, true);
+    if (speed == 0.0 && acceleration == 0.0) continue;
+    // The time to cover the gap plus the margin at speed + acceleration·t: the positive root of
+    // speed·t + acceleration·t²/2 = travel, written so as not to cancel when acceleration is 0.
+    const double travel = std::max(distance(p, s.motions), 0.0) + pair.margin;
+    shortest = std::min(
+        shortest, 2.0 * travel / (speed + std::sqrt(speed * speed + 2.0 * acceleration * travel)));
+  }
+  return shortest;
+}
+
+}  // namespace gp::oracle

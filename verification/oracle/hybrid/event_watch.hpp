@@ -1,0 +1,65 @@
+#pragma once
+// The events of the hybrid integration, as root functions of the state for SUNDIALS' root
+// finder, each falling through zero when its event happens:
+//   Approach   two hulls not in contact: their signed distance (contact onset);
+//   Landing    another vertex of a body resting on an edge: its gap to that edge's line;
+//   LiftOff    an active contact: its normal force;
+//   StickLimit a sticking contact: μ f_n ∓ f_t (friction reaches its bound: stick to slip);
+//   SlipStop   a sliding contact: its slip, signed so that it falls (slip to stick, or reversal);
+//   OffEdge    a vertex on an edge: its distance to either end (it slides off the edge);
+//   OffCorner  a contact at a corner: how far its normal is inside the corner's normal cone.
+// The list is rebuilt whenever the active contacts change.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "verification/oracle/contact/active_contact.hpp"
+#include "verification/oracle/hybrid/hybrid_system.hpp"
+
+namespace gp::oracle {
+
+enum class RootKind { Approach, Landing, LiftOff, StickLimit, SlipStop, OffEdge, OffCorner };
+
+struct Root {
+  RootKind kind;
+  std::size_t index;  ///< the pair (Approach) or the active contact (every other kind)
+  int detail;         ///< Landing: the vertex; StickLimit, OffEdge, OffCorner: which side (0, 1)
+};
+
+class EventWatch {
+ public:
+  /// Watches every pair of hulls of `world` on different bodies, one of them dynamic, except
+  /// pairs of bare segments (no area: they never touch). A vertex within `end_tolerance` [m] of
+  /// an end of its edge is not watched leaving it there. `world` must outlive this.
+  EventWatch(const World& world, double end_tolerance);
+
+  const std::vector<HullPair>& pairs() const { return pairs_; }
+
+  /// Rebuilds the root functions for the active `contacts`, with every body at `motions`.
+  void arm(std::span<const ActiveContact> contacts, std::span<const Motion> motions);
+  std::size_t size() const { return roots_.size(); }
+  const Root& root(std::size_t i) const { return roots_[i]; }
+
+  /// The root functions at `snapshot` (whose contacts are those armed) into g.
+  void evaluate(const Snapshot& snapshot, std::span<const ActiveContact> contacts, double* g) const;
+
+  /// How long [s] the solver may go from `snapshot` before it must stop and look again: no pair
+  /// without contact can move into the other by more than its margin in that time, so that no
+  /// step can jump over a whole pass-through, which the root finder would not see. Infinite when
+  /// nothing moves.
+  double horizon(const Snapshot& snapshot) const;
+
+  /// The signed distance [m] of pair `p` at `motions`.
+  double distance(std::size_t p, std::span<const Motion> motions) const;
+
+ private:
+  const World& world_;
+  double end_tolerance_;
+  std::vector<HullPair> pairs_;
+  std::vector<double> reach_;  // m: per pair, the farthest point of hull a, then of hull b
+  std::vector<Root> roots_;
+  std::vector<bool> in_contact_;  // per pair, as armed
+};
+
+}  // namespace gp::oracle
