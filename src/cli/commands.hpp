@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace gp::cli {
 

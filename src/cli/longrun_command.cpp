@@ -3,7 +3,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "engine/input_error.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/input_error.hpp"
 #include "verification/long_run/long_run.hpp"
 
 namespace gp::cli {

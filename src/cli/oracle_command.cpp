@@ -9,8 +9,9 @@
 #include "cli/commands.hpp"
 #include "cli/oracle_csv.hpp"
 #include "cli/partial_file.hpp"
-#include "engine/input_error.hpp"
 #include "engine/output/output_times.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/input_error.hpp"
 #include "verification/oracle/oracle.hpp"
 
 namespace gp::cli {

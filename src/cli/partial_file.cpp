@@ -4,7 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "engine/input_error.hpp"
+#include "scene/input_error.hpp"
 
 namespace gp::cli {
 

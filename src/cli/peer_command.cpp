@@ -6,7 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/partial_file.hpp"
-#include "engine/input_error.hpp"
+#include "scene/input_error.hpp"
 #include "verification/peers/peer_run.hpp"
 #include "verification/peers/peer_trajectory.hpp"
 

@@ -5,10 +5,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/partial_file.hpp"
-#include "engine/input_error.hpp"
 #include "engine/output/output_times.hpp"
 #include "engine/output/trajectory.hpp"
 #include "engine/scene/run.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/input_error.hpp"
 
 namespace gp::cli {
 

@@ -10,8 +10,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/partial_file.hpp"
-#include "engine/input_error.hpp"
 #include "engine/output/output_times.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/input_error.hpp"
 #include "verification/oracle/oracle.hpp"
 #include "verification/viewer/recording.hpp"
 #include "verification/viewer/viewer_page.hpp"

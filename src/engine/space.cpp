@@ -6,15 +6,16 @@
 
 #include "engine/capacity.hpp"
 #include "engine/geometry/transform.hpp"
-#include "engine/input_error.hpp"
 #include "engine/numerical_error.hpp"
 #include "engine/setup/mass_setup.hpp"
+#include "engine/setup/mass_validation.hpp"
 #include "engine/setup/shape_offset.hpp"
-#include "engine/setup/validation.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
 #include "gamephysics/models/dd/linear_displacement.hpp"
 #include "gamephysics/models/dd/linear_velocity.hpp"
+#include "scene/input_error.hpp"
+#include "scene/validation.hpp"
 
 namespace gp {
 
@@ -30,6 +31,7 @@ BodyId Space::add_body(const BodyDef& def) {
   const auto id = static_cast<BodyId>(names_.size());
   const std::string prefix = "bodies[" + std::to_string(id) + "]";
   validate_body(def, prefix);
+  validate_derived_mass(def, prefix);
   const MassSetup mass = mass_setup(def);
   const bool dynamic = def.type == BodyType::Dynamic;
   const bool rotates = dynamic && mass.moment > 0.0;

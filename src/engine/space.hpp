@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/body.hpp"
 #include "engine/body_names.hpp"
+#include "engine/body_state.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/collision_detection.hpp"
 #include "engine/contacts/contact_solver.hpp"
@@ -20,7 +20,8 @@
 #include "engine/dynamics/force_model.hpp"
 #include "engine/dynamics/integrator.hpp"
 #include "engine/pipeline.hpp"
-#include "engine/settings.hpp"
+#include "scene/body.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 

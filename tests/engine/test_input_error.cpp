@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "engine/input_error.hpp"
+#include "scene/input_error.hpp"
 
 TEST_CASE("An input error names the field, the rule and the value",
           "[FR:Verify-Physical_Constraints]") {

@@ -1,7 +1,7 @@
 #pragma once
 // Small scenes for the peer-engine tests, built in code.
 
-#include "engine/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace gp::peers::testing {
 

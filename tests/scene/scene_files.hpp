@@ -8,8 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "engine/input_error.hpp"
-#include "engine/scene/scene.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/input_error.hpp"
+#include "scene/scene.hpp"
 
 namespace gp::test {
 

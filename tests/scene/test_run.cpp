@@ -4,6 +4,7 @@
 
 #include "engine/output/output_times.hpp"
 #include "engine/scene/run.hpp"
+#include "engine/scene/scene_space.hpp"
 #include "scene_files.hpp"
 
 namespace {

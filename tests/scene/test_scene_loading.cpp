@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <variant>
 
+#include "engine/scene/scene_space.hpp"
 #include "scene_files.hpp"
 
 using gp::test::load;

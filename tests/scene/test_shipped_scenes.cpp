@@ -6,7 +6,8 @@
 #include <set>
 
 #include "engine/scene/run.hpp"
-#include "engine/scene/scene.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/scene.hpp"
 
 namespace {
 

@@ -8,6 +8,7 @@
 
 #include "engine/output/trajectory.hpp"
 #include "engine/scene/run.hpp"
+#include "engine/scene/scene_space.hpp"
 #include "scene_files.hpp"
 
 namespace {

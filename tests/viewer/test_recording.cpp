@@ -4,7 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "engine/scene/scene.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/scene.hpp"
 #include "verification/viewer/recording.hpp"
 
 namespace {

@@ -1,5 +1,7 @@
 #include "verification/bench/bench_engine.hpp"
 
+#include "engine/scene/scene_space.hpp"
+
 #include <sstream>
 
 namespace gp::bench {

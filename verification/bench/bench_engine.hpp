@@ -8,7 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/scene/scene.hpp"
+#include "engine/space.hpp"
+#include "scene/scene.hpp"
 #include "verification/peers/peer_world.hpp"
 
 namespace gp::bench {

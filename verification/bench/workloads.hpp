@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene/scene.hpp"
+#include "engine/space.hpp"
+#include "scene/scene.hpp"
 
 namespace gp::bench {
 

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <sstream>
 
-#include "engine/input_error.hpp"
 #include "engine/numerical_error.hpp"
 #include "engine/output/trajectory.hpp"
 #include "engine/scene/run.hpp"
-#include "engine/scene/scene.hpp"
+#include "engine/scene/scene_space.hpp"
+#include "scene/input_error.hpp"
+#include "scene/scene.hpp"
 
 namespace gp::fuzz {
 

@@ -9,6 +9,7 @@
 
 #include "engine/geometry/world_shape.hpp"
 #include "engine/numerical_error.hpp"
+#include "engine/scene/scene_space.hpp"
 
 namespace gp::verification {
 

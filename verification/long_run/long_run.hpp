@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "verification/suite/check.hpp"
 
 namespace gp::verification {

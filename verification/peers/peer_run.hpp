@@ -4,7 +4,7 @@
 
 #include <functional>
 
-#include "engine/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "verification/peers/peer_world.hpp"
 
 namespace gp::peers {

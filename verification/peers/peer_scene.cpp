@@ -1,5 +1,6 @@
 #include "verification/peers/peer_scene.hpp"
 
+#include "engine/scene/scene_space.hpp"
 #include "engine/setup/mass_setup.hpp"
 
 namespace gp::peers {

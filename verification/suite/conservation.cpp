@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/scene/run.hpp"
+#include "engine/scene/scene_space.hpp"
 #include "verification/quantities/mechanical_quantities.hpp"
 #include "verification/suite/scene_builders.hpp"
 #include "verification/suite/suite.hpp"

@@ -6,6 +6,7 @@
 
 #include "engine/numerical_error.hpp"
 #include "engine/scene/run.hpp"
+#include "engine/scene/scene_space.hpp"
 #include "gamephysics/models/dd/kinetic_energy.hpp"
 #include "gamephysics/models/dd/potential_energy.hpp"
 #include "verification/suite/oracle_trajectory.hpp"

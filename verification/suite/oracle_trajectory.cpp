@@ -2,6 +2,8 @@
 
 #include <ctime>
 
+#include "engine/scene/scene_space.hpp"
+
 namespace gp::verification {
 
 Trajectory run_oracle_trajectory(const Scene& scene, std::span<const double> times,

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "engine/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace gp::verification {
 

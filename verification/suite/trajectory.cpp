@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "engine/scene/run.hpp"
+#include "engine/scene/scene_space.hpp"
 
 namespace gp::verification {
 

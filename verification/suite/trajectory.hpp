@@ -6,10 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/body.hpp"
+#include "engine/body_state.hpp"
 #include "engine/contacts/impacts.hpp"
-#include "engine/scene/scene.hpp"
-#include "engine/settings.hpp"
+#include "scene/body.hpp"
+#include "scene/scene.hpp"
+#include "scene/settings.hpp"
 
 namespace gp::verification {
 

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "engine/scene/scene.hpp"
 #include "engine/space.hpp"
+#include "scene/scene.hpp"
 #include "verification/quantities/mechanical_quantities.hpp"
 
 namespace gp::verification {

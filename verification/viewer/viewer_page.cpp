@@ -7,8 +7,8 @@
 #include <variant>
 #include <vector>
 
-#include "engine/settings.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
+#include "scene/settings.hpp"
 #include "verification/html/html_escape.hpp"
 #include "verification/viewer/viewer_assets.hpp"
 

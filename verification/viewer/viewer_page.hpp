@@ -7,8 +7,8 @@
 #include <ostream>
 #include <string>
 
-#include "engine/scene/scene.hpp"
 #include "engine/space.hpp"
+#include "scene/scene.hpp"
 #include "verification/oracle/oracle.hpp"
 #include "verification/viewer/recording.hpp"
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <variant>
 
-#include "engine/geometry/shape.hpp"
+#include "scene/shape.hpp"
 
 namespace gp {
 

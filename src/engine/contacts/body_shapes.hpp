@@ -8,11 +8,11 @@
 #include <variant>
 #include <vector>
 
-#include "engine/body.hpp"
 #include "engine/dynamics/force_model.hpp"
 #include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/geometry/world_shapes.hpp"
+#include "scene/body.hpp"
 
 namespace gp {
 

@@ -13,7 +13,7 @@
 #include "engine/contacts/contact_set.hpp"
 #include "engine/dynamics/motion_state.hpp"
 #include "engine/geometry/transform.hpp"
-#include "engine/settings.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 

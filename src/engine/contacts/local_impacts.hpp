@@ -11,10 +11,11 @@
 #include <span>
 #include <vector>
 
+#include "engine/body_state.hpp"
 #include "engine/contacts/body_shapes.hpp"
 #include "engine/contacts/contact_set.hpp"
 #include "engine/contacts/impacts.hpp"
-#include "engine/settings.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 

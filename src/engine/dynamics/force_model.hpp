@@ -10,9 +10,9 @@
 #include <span>
 #include <vector>
 
-#include "engine/body.hpp"
+#include "engine/body_state.hpp"
 #include "engine/dynamics/motion_state.hpp"
-#include "engine/settings.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 

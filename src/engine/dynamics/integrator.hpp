@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "engine/dynamics/force_model.hpp"
-#include "engine/settings.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "engine/body.hpp"
+#include "engine/body_state.hpp"
 #include "gamephysics/models/types.hpp"
 
 namespace gp {

@@ -2,7 +2,7 @@
 // Area, centroid and polar second moment of area of a shape: its mass properties per unit
 // density (DD:ctrOfMass, DD:momentOfInertia).
 
-#include "engine/geometry/shape.hpp"
+#include "scene/shape.hpp"
 
 namespace gp {
 

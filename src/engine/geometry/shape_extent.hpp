@@ -3,7 +3,7 @@
 // impact (the oracle, the engine's time-of-impact search): how far its points reach from the
 // centre of mass, and how thick it is.
 
-#include "engine/geometry/shape.hpp"
+#include "scene/shape.hpp"
 
 namespace gp {
 

@@ -4,8 +4,8 @@
 #include <span>
 
 #include "engine/geometry/aabb.hpp"
-#include "engine/geometry/shape.hpp"
 #include "engine/geometry/transform.hpp"
+#include "scene/shape.hpp"
 
 namespace gp {
 

@@ -3,8 +3,8 @@
 
 #include <functional>
 
-#include "engine/scene/scene.hpp"
 #include "engine/space.hpp"
+#include "scene/scene.hpp"
 
 namespace gp {
 

@@ -2,7 +2,7 @@
 // Mass, centre of mass and moment of inertia of a body from its shapes and their densities
 // (DD:ctrOfMass, DD:momentOfInertia and the parallel-axis theorem), or from given values.
 
-#include "engine/body.hpp"
+#include "scene/body.hpp"
 
 namespace gp {
 

@@ -2,7 +2,7 @@
 // Moving a shape within its body frame: the engine re-expresses shapes relative to the centre of
 // mass, so that a body's position is its centre of mass (as the SRS's p(t) is).
 
-#include "engine/geometry/shape.hpp"
+#include "scene/shape.hpp"
 
 namespace gp {
 

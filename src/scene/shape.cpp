@@ -1,4 +1,4 @@
-#include "engine/geometry/shape.hpp"
+#include "scene/shape.hpp"
 
 #include <algorithm>
 #include <cmath>

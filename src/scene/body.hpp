@@ -1,13 +1,12 @@
 #pragma once
-// What a user gives to create a body (FR:Input-Initial-Conditions, FR:Input-Surface-Properties)
-// and what the engine reports of it.
+// What a user gives to create a body (FR:Input-Initial-Conditions, FR:Input-Surface-Properties).
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "engine/geometry/shape.hpp"
 #include "gamephysics/models/types.hpp"
+#include "scene/shape.hpp"
 
 namespace gp {
 
@@ -39,20 +38,6 @@ struct BodyDef {
   std::optional<Vec2> force_point;  ///< m, body frame: where `force` acts (default: the CoM)
   double torque = 0.0;              ///< N·m: constant applied torque
   std::vector<ShapeDef> shapes;     ///< none: a point mass (give mass, and moment to rotate)
-};
-
-/// A body's state: centre of mass, orientation in [0, 2π) (SRS output constraint), velocities.
-struct BodyState {
-  Vec2 position;
-  double angle;
-  Vec2 velocity;
-  double angular_velocity;
-};
-
-/// A force and a torque about the centre of mass.
-struct Wrench {
-  Vec2 force = Vec2::Zero();  ///< N
-  double torque = 0.0;        ///< N·m
 };
 
 }  // namespace gp

@@ -1,19 +1,14 @@
-#include "engine/setup/validation.hpp"
+#include "scene/validation.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <sstream>
-#include <stdexcept>
 
-#include "engine/input_error.hpp"
-#include "engine/setup/mass_setup.hpp"
-#include "engine/setup/shape_offset.hpp"
+#include "scene/input_error.hpp"
 
 namespace gp {
 
-namespace {
-
-std::string text(double value) {
+std::string number_text(double value) {
   if (std::isnan(value)) return "nan";  // the sign of a NaN depends on how it was made
   std::ostringstream out;
   out.precision(17);
@@ -21,31 +16,33 @@ std::string text(double value) {
   return out.str();
 }
 
-std::string text(const Vec2& v) {
-  return "[" + text(v.x()) + ", " + text(v.y()) + "]";
+std::string number_text(const Vec2& v) {
+  return "[" + number_text(v.x()) + ", " + number_text(v.y()) + "]";
 }
 
+namespace {
+
 void finite(double value, const std::string& field) {
-  if (!std::isfinite(value)) throw InputError(field, "must be a finite number", text(value));
+  if (!std::isfinite(value)) throw InputError(field, "must be a finite number", number_text(value));
 }
 
 void finite(const Vec2& value, const std::string& field) {
-  if (!value.allFinite()) throw InputError(field, "must be finite numbers", text(value));
+  if (!value.allFinite()) throw InputError(field, "must be finite numbers", number_text(value));
 }
 
 void positive(double value, const std::string& field, const std::string& why) {
   finite(value, field);
-  if (!(value > 0.0)) throw InputError(field, "must be > 0 (" + why + ")", text(value));
+  if (!(value > 0.0)) throw InputError(field, "must be > 0 (" + why + ")", number_text(value));
 }
 
 void non_negative(double value, const std::string& field) {
   finite(value, field);
-  if (!(value >= 0.0)) throw InputError(field, "must be >= 0", text(value));
+  if (!(value >= 0.0)) throw InputError(field, "must be >= 0", number_text(value));
 }
 
 void count_up_to(int value, int most, const std::string& field) {
   if (value < 0 || value > most) {
-    throw InputError(field, "must be in [0, " + std::to_string(most) + "]", text(value));
+    throw InputError(field, "must be in [0, " + std::to_string(most) + "]", number_text(value));
   }
 }
 
@@ -55,31 +52,6 @@ constexpr int kMaxIterations = 1000;
 // Points of an island solved directly at most: the dense solve grows with their cube.
 constexpr int kMaxDirectSolvePoints = 256;
 
-/// The mass, centre of mass and moment of inertia the engine derives from the shapes, and the
-/// shapes placed about that centre, must be finite, and a dynamic body's mass > 0: finite inputs
-/// can still overflow them (a disc of radius 1e300 has an infinite area) or underflow the mass to
-/// 0 (a disc of radius 1e-200).
-void derived_mass(const BodyDef& def, const std::string& prefix) {
-  const MassSetup setup = mass_setup(def);
-  const bool dynamic = def.type == BodyType::Dynamic;
-  if (!std::isfinite(setup.mass) || !std::isfinite(setup.moment) ||
-      !setup.local_center.allFinite() || (dynamic && !(setup.mass > 0.0))) {
-    throw InputError(prefix + ".shapes",
-                     "must give the body a finite mass (> 0 if dynamic), centre of mass and "
-                     "moment of inertia",
-                     "mass " + text(setup.mass) + ", moment " + text(setup.moment) + ", centre " +
-                         text(setup.local_center));
-  }
-  for (std::size_t k = 0; k < def.shapes.size(); ++k) {
-    try {
-      translated(def.shapes[k].shape, -setup.local_center);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(prefix + ".shapes[" + std::to_string(k) + "]",
-                       "must stay finite about the body's centre of mass", e.what());
-    }
-  }
-}
-
 }  // namespace
 
 void validate_body(const BodyDef& def, const std::string& prefix) {
@@ -88,7 +60,7 @@ void validate_body(const BodyDef& def, const std::string& prefix) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
   if (def.angle < 0.0 || def.angle > two_pi) {
     throw InputError(prefix + ".angle", "must be in [0, 2π] (SRS software constraint on ϕ)",
-                     text(def.angle));
+                     number_text(def.angle));
   }
   finite(def.velocity, prefix + ".velocity");
   finite(def.angular_velocity, prefix + ".angular_velocity");
@@ -103,10 +75,11 @@ void validate_body(const BodyDef& def, const std::string& prefix) {
     finite(s.restitution, field + ".restitution");
     if (s.restitution < 0.0 || s.restitution > 1.0) {
       throw InputError(field + ".restitution", "must be in [0, 1] (SRS data constraint on C_R)",
-                       text(s.restitution));
+                       number_text(s.restitution));
     }
     finite(s.friction, field + ".friction");
-    if (s.friction < 0.0) throw InputError(field + ".friction", "must be >= 0", text(s.friction));
+    if (s.friction < 0.0)
+      throw InputError(field + ".friction", "must be >= 0", number_text(s.friction));
     positive(s.density, field + ".density", "mass per unit area");
   }
   const bool has_area = [&] {
@@ -119,14 +92,13 @@ void validate_body(const BodyDef& def, const std::string& prefix) {
   if (def.type == BodyType::Dynamic && !def.mass && !has_area) {
     throw InputError(prefix + ".mass", "is required for a dynamic body without area", "none");
   }
-  derived_mass(def, prefix);
 }
 
 void validate_settings(const Settings& settings) {
   finite(settings.gravity, "gravity");
   if (settings.G) {
     finite(*settings.G, "G");
-    if (*settings.G < 0.0) throw InputError("G", "must be >= 0", text(*settings.G));
+    if (*settings.G < 0.0) throw InputError("G", "must be >= 0", number_text(*settings.G));
   }
   count_up_to(settings.velocity_iterations, kMaxIterations, "velocity_iterations");
   count_up_to(settings.position_iterations, kMaxIterations, "position_iterations");
@@ -136,7 +108,8 @@ void validate_settings(const Settings& settings) {
   non_negative(settings.linear_slop, "linear_slop");
   non_negative(settings.contact_margin, "contact_margin");
   if (settings.max_impacts_per_step < 0) {
-    throw InputError("max_impacts_per_step", "must be >= 0", text(settings.max_impacts_per_step));
+    throw InputError("max_impacts_per_step", "must be >= 0",
+                     number_text(settings.max_impacts_per_step));
   }
 }
 

@@ -1,4 +1,4 @@
-#include "engine/settings.hpp"
+#include "scene/settings.hpp"
 
 #include <array>
 #include <utility>

@@ -1,4 +1,4 @@
-#include "engine/input_error.hpp"
+#include "scene/input_error.hpp"
 
 namespace gp {
 

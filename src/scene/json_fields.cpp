@@ -1,11 +1,11 @@
-#include "engine/scene/json_fields.hpp"
+#include "scene/json_fields.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <sstream>
 
-#include "engine/input_error.hpp"
+#include "scene/input_error.hpp"
 
 namespace gp {
 

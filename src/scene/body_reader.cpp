@@ -1,12 +1,12 @@
-#include "engine/scene/body_reader.hpp"
+#include "scene/body_reader.hpp"
 
 #include <array>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
-#include "engine/input_error.hpp"
-#include "engine/scene/json_fields.hpp"
+#include "scene/input_error.hpp"
+#include "scene/json_fields.hpp"
 
 namespace gp {
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/body.hpp"
+#include "scene/body.hpp"
 
 namespace gp {
 

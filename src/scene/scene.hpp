@@ -4,14 +4,12 @@
 // FR:Verify-Physical_Constraints).
 
 #include <filesystem>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "engine/body.hpp"
-#include "engine/settings.hpp"
-#include "engine/space.hpp"
+#include "scene/body.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 
@@ -35,16 +33,12 @@ struct SceneOverrides {
 
 /// Reads and checks the scene in `file`. Throws InputError naming the JSON path of the first
 /// fault ("bodies[3].mass", "dt"; "line L, column C" for a syntax error; "(file)" for the file as
-/// a whole). The SRS data constraints on bodies are checked by build_space.
+/// a whole). The SRS data constraints on bodies are checked when they are added to a space
+/// (the engine's build_space).
 Scene load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
 
 /// The same reading and checks for the text of a scene file already in memory (the fuzzer and
 /// the replay of its inputs feed bytes, not files). Throws InputError as load_scene does.
 Scene parse_scene(const std::string& text, const SceneOverrides& overrides = {});
-
-/// A space with the scene's settings and bodies, added in order so that body i of the file is
-/// BodyId i. Throws InputError naming "bodies[i].field" for a body that breaks an SRS data
-/// constraint (Space::add_body).
-std::unique_ptr<Space> build_space(const Scene& scene);
 
 }  // namespace gp

@@ -1,10 +1,10 @@
-#include "engine/scene/json_document.hpp"
+#include "scene/json_document.hpp"
 
 #include <set>
 #include <vector>
 
-#include "engine/input_error.hpp"
-#include "engine/scene/json_fields.hpp"
+#include "scene/input_error.hpp"
+#include "scene/json_fields.hpp"
 
 namespace gp {
 

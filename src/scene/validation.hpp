@@ -4,12 +4,13 @@
 
 #include <string>
 
-#include "engine/body.hpp"
-#include "engine/settings.hpp"
+#include "scene/body.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 
-/// Checks `def`, reporting fields as `prefix` + ".mass" and so on (prefix e.g. "bodies[3]").
+/// Checks `def`, reporting fields as `prefix` + ".mass" and so on (prefix e.g. "bodies[3]"). What
+/// the engine derives from the shapes (mass, centre, moment) is checked by the engine, after this.
 void validate_body(const BodyDef& def, const std::string& prefix);
 
 /// Checks the settings of a space (finite gravity, G ≥ 0, iteration counts ≥ 0).
@@ -17,5 +18,10 @@ void validate_settings(const Settings& settings);
 
 /// Checks a time step: finite and > 0.
 void validate_step(double dt, const std::string& field);
+
+/// A number as the checks' messages show it: 17 significant digits, "nan" for any NaN.
+std::string number_text(double value);
+/// A vector as "[x, y]", each coordinate as number_text shows it.
+std::string number_text(const Vec2& v);
 
 }  // namespace gp

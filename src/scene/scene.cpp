@@ -1,4 +1,4 @@
-#include "engine/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <map>
 #include <sstream>
 
-#include "engine/input_error.hpp"
-#include "engine/scene/body_reader.hpp"
-#include "engine/scene/json_document.hpp"
-#include "engine/scene/json_fields.hpp"
-#include "engine/setup/validation.hpp"
+#include "scene/body_reader.hpp"
+#include "scene/input_error.hpp"
+#include "scene/json_document.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/validation.hpp"
 
 namespace gp {
 
@@ -126,12 +126,6 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
   read_timing(root, scene);
   scene.bodies = read_bodies(root);
   return scene;
-}
-
-std::unique_ptr<Space> build_space(const Scene& scene) {
-  auto space = std::make_unique<Space>(scene.settings);
-  for (const BodyDef& body : scene.bodies) space->add_body(body);
-  return space;
 }
 
 }  // namespace gp
