@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/oracle_csv.hpp"
+#include "verification/oracle_csv.hpp"
 #include "cli/partial_file.hpp"
 #include "engine/output/output_times.hpp"
 #include "engine/scene/scene_space.hpp"
@@ -45,8 +45,8 @@ int oracle(const OracleCommandOptions& options) {
     return kBadInput;
   }
   try {
-    write_trajectory(out->stream(), scene, result);
-    if (events) write_impacts(events->stream(), scene, result);
+    verification::write_trajectory(out->stream(), scene, result);
+    if (events) verification::write_impacts(events->stream(), scene, result);
     out->commit();
     if (events) events->commit();
   } catch (const std::exception& e) {  // the output could not be written

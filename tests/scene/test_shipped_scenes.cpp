@@ -39,9 +39,11 @@ TEST_CASE("Every shipped scene loads and builds", "[FR:Input-Initial-Conditions]
     CHECK(space->body_count() == scene.bodies.size());
     CHECK(space->body_count() > 0);
   }
-  CHECK(names == std::set<std::string>{"bouncing_ball", "head_on", "heavy_stack", "newtons_cradle",
-                                       "oblique", "orbit", "projectile", "pyramid20", "rain1000",
-                                       "spinning_box"});
+  CHECK(names == std::set<std::string>{"bouncing_ball", "box_drop", "disc_roll", "head_on",
+                                       "heavy_stack", "newtons_cradle", "oblique", "orbit",
+                                       "projectile", "pyramid20", "pyramid6", "rain1000",
+                                       "ramp_slide", "settle50", "spinning_box", "stack3",
+                                       "static_friction", "step_tip"});
 }
 
 TEST_CASE("The large shipped scenes have the bodies they promise",

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/body.hpp"
+#include "scene/body_state.hpp"
 #include "scene/scene.hpp"
 #include "verification/oracle/domain_error.hpp"
 

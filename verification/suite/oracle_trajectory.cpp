@@ -15,7 +15,8 @@ Trajectory run_oracle_trajectory(const Scene& scene, std::span<const double> tim
   t.times = std::move(result.times);
   t.states = std::move(result.states);
   for (const OracleEvent& e : result.events) {
-    t.impacts.push_back({e.time, e.body_a, e.body_b, e.normal, e.point, e.impulse});
+    t.impacts.push_back({e.time, static_cast<BodyId>(e.body_a), static_cast<BodyId>(e.body_b),
+                         e.normal, e.point, e.impulse});
   }
   return t;
 }

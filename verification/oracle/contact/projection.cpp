@@ -12,6 +12,9 @@ namespace gp::oracle {
 
 namespace {
 
+// m: a gap this small is round-off of the positions (1e-16 relative at 10 m).
+constexpr double kConverged = 1e-15;
+
 // The least M-weighted change Δ with rows·Δ = −values: Δ = M⁻¹ Jᵀ (J M⁻¹ Jᵀ)⁺ (−values).
 void least_change(const World& world, const std::vector<BodyPairVector>& rows,
                   const std::vector<double>& values, std::span<Vec2> linear,
@@ -60,7 +63,7 @@ double project_onto_contacts(const World& world, std::span<const ActiveContact> 
       values.push_back(k[i].gap);
       largest = std::max(largest, std::abs(k[i].gap));
     }
-    if (largest == 0.0) break;
+    if (largest <= kConverged) break;
     std::fill(linear.begin(), linear.end(), Vec2::Zero());
     std::fill(angular.begin(), angular.end(), 0.0);
     least_change(world, rows, values, linear, angular);

@@ -126,7 +126,8 @@ void ContactEvents::settle(double t, std::vector<Motion>& motions,
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       if (k[i].gap_rate < -options_.rest_speed && candidates[i].friction > 0.0 &&
           std::abs(k[i].slip) > options_.speed_tolerance) {
-        throw OracleDomainError(describe(candidates[i].first, candidates[i].second) +
+        const HullPair& pair = watch_.pairs()[candidates[i].pair];
+        throw OracleDomainError(describe(pair.body_a, pair.body_b) +
                                     " collide with friction while sliding (slip " +
                                     message_number(k[i].slip) +
                                     " m/s); the oracle's impacts are frictionless (IM:col2D)",
@@ -146,17 +147,24 @@ void ContactEvents::settle(double t, std::vector<Motion>& motions,
       motions[b].angular_velocity = angular_velocity[b];
     }
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (p[i] > 0.0) {
-        impacts.push_back(
-            {t, candidates[i].first, candidates[i].second, k[i].normal, k[i].point, p[i]});
-      }
+      if (p[i] <= 0.0) continue;
+      // Reported as the pair's bodies A and B, with the normal from B towards A.
+      const HullPair& pair = watch_.pairs()[candidates[i].pair];
+      const double sign = candidates[i].first == pair.body_a ? 1.0 : -1.0;
+      // + 0 turns a −0 component into 0 for the impact log.
+      const Vec2 normal = sign * k[i].normal + Vec2::Zero();
+      impacts.push_back({t, pair.body_a, pair.body_b, normal, k[i].point, p[i]});
     }
     k = kinematics_of(candidates, motions);
   }
   std::vector<ActiveContact> touching;
   std::vector<ContactKinematics> touching_k;
+  // After an impact, a contact leaving slower than the rest speed stays (its speed is put to
+  // zero by the projection): a disc dropped into a wedge would otherwise bounce between the two
+  // sides in an endless sequence of ever slower impacts, as an inelastic ball does on the ground.
+  const double leaving = approaching ? options_.rest_speed : options_.speed_tolerance;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (k[i].gap_rate > options_.speed_tolerance) continue;  // separating
+    if (k[i].gap_rate > leaving) continue;
     touching.push_back(candidates[i]);
     touching_k.push_back(k[i]);
   }

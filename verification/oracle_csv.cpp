@@ -1,14 +1,13 @@
-#include "cli/oracle_csv.hpp"
+#include "verification/oracle_csv.hpp"
 
 #include <array>
 #include <cstdio>
 
 #include "engine/output/trajectory.hpp"
 
-namespace gp::cli {
+namespace gp::verification {
 
-void write_trajectory(std::ostream& out, const Scene& scene,
-                      const verification::OracleResult& result) {
+void write_trajectory(std::ostream& out, const Scene& scene, const OracleResult& result) {
   out << kTrajectoryHeader << '\n';
   for (std::size_t k = 0; k < result.times.size(); ++k) {
     for (std::size_t body = 0; body < scene.bodies.size(); ++body) {
@@ -17,10 +16,9 @@ void write_trajectory(std::ostream& out, const Scene& scene,
   }
 }
 
-void write_impacts(std::ostream& out, const Scene& scene,
-                   const verification::OracleResult& result) {
+void write_impacts(std::ostream& out, const Scene& scene, const OracleResult& result) {
   out << kImpactHeader << '\n';
-  for (const verification::OracleEvent& e : result.events) {
+  for (const OracleEvent& e : result.events) {
     write_number(out, e.time);
     out << ',' << scene.bodies[e.body_a].name << ',' << scene.bodies[e.body_b].name;
     for (double value : {e.normal.x(), e.normal.y(), e.impulse}) {
@@ -31,4 +29,4 @@ void write_impacts(std::ostream& out, const Scene& scene,
   }
 }
 
-}  // namespace gp::cli
+}  // namespace gp::verification
