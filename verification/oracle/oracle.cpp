@@ -10,6 +10,7 @@
 
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "verification/oracle/hybrid/contact_events.hpp"
+#include "verification/oracle/model/world.hpp"
 #include "verification/oracle/ode_problem.hpp"
 #include "verification/oracle/ode_solver.hpp"
 #include "verification/oracle/zeno_guard.hpp"

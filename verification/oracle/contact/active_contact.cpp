@@ -1,4 +1,5 @@
 #include "verification/oracle/contact/active_contact.hpp"
+#include "verification/oracle/geometry/placement.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,6 +6,8 @@
 #include "verification/oracle/contact/contact_modes.hpp"
 #include "verification/oracle/contact/impacts.hpp"
 #include "verification/oracle/contact/projection.hpp"
+#include "verification/oracle/geometry/contact_geometry.hpp"
+#include "verification/oracle/model/applied_forces.hpp"
 
 namespace gp::oracle {
 

@@ -1,4 +1,6 @@
 #include "verification/oracle/hybrid/event_watch.hpp"
+#include "verification/oracle/geometry/contact_geometry.hpp"
+#include "verification/oracle/geometry/placement.hpp"
 
 #include <algorithm>
 #include <cmath>

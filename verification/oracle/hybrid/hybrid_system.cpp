@@ -1,6 +1,7 @@
 #include "verification/oracle/hybrid/hybrid_system.hpp"
 
 #include "verification/oracle/contact/projection.hpp"
+#include "verification/oracle/model/applied_forces.hpp"
 
 namespace gp::oracle {
 
