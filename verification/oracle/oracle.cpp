@@ -127,13 +127,14 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
       }
       const std::size_t first_new = result.events.size();
       contacts.handle(t, solver->values(), solver->crossed(), result.events);
-      for (std::size_t k = first_new; k < result.events.size(); ++k) {
-        zeno.record(t, contacts.describe(result.events[k].body_a, result.events[k].body_b));
-      }
+      // One count per event, simultaneous impacts included; changes of contact without an
+      // impact can chatter too (stick, slip, stick, ...).
       if (first_new == result.events.size()) {
-        // Changes of contact without an impact can chatter too (stick, slip, stick, ...).
-        zeno.record(t, "the contacts");
+        zeno.record(t, "a change of contact");
         ++result.contact_changes;
+      } else {
+        const OracleEvent& e = result.events[first_new];
+        zeno.record(t, "an impact of " + contacts.describe(e.body_a, e.body_b));
       }
       system.states().motions_at(t, solver->values(), motions);
       watch.arm(system.contacts(), motions);

@@ -50,9 +50,9 @@ struct OracleOptions {
   /// m/s, > 0: a contact point moving apart or slipping slower than this is at rest (round-off
   /// of the impulses and projections, not motion).
   double speed_tolerance = 1e-9;
-  /// Most impacts in a run (a bound on the work, and the first guard against Zeno sequences).
+  /// Most events in a run (a bound on the work, and a guard against Zeno sequences).
   std::size_t max_events = 10000;
-  /// A Zeno sequence: `zeno_events` impacts within `zeno_window` [s].
+  /// A Zeno sequence: `zeno_events` events within `zeno_window` [s].
   std::size_t zeno_events = 50;
   double zeno_window = 1e-6;
   /// Most solver steps in a run (a bound on the work); more is a solver failure.

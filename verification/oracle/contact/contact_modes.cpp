@@ -96,12 +96,16 @@ bool choose_contact_modes(const World& world, std::vector<ActiveContact>& contac
   const Eigen::VectorXd w = M * *z + q;
   // Forces and accelerations below these fractions of the problem's own scales are round-off.
   const double force_scale = std::max(z->cwiseAbs().maxCoeff(), 1e-300);
-  const double rate_scale = std::max(q.cwiseAbs().maxCoeff(), 1e-300);
+  // Accelerations are judged against the applied ones too: two bodies falling together touch
+  // with g̈ = 0 up to round-off, which must not count as separating.
+  double applied = 0.0;
+  for (const Vec2& a : linear) applied = std::max(applied, a.norm());
+  const double rate_scale = std::max({q.cwiseAbs().maxCoeff(), applied, 1e-300});
   std::vector<ActiveContact> kept;
   for (std::size_t i = 0; i < m; ++i) {
     ActiveContact c = contacts[i];
     const double fn = (*z)[slots[i].normal];
-    if (fn <= 1e-12 * force_scale && w[slots[i].normal] > 1e-12 * rate_scale) continue;
+    if (fn <= 1e-12 * force_scale && w[slots[i].normal] > 1e-9 * rate_scale) continue;
     if (slots[i].plus >= 0 && (*z)[slots[i].plus + 2] > 1e-12 * rate_scale) {
       // β > 0: the friction is at its limit and the contact starts to slip, against the force.
       c.mode = ContactMode::Sliding;

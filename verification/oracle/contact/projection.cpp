@@ -44,9 +44,8 @@ std::vector<ContactKinematics> kinematics_of(std::span<const ActiveContact> cont
 
 }  // namespace
 
-double project_onto_contacts(const World& world, std::span<const ActiveContact> contacts,
-                             std::span<Motion> motions) {
-  if (contacts.empty()) return 0.0;
+double project_positions(const World& world, std::span<const ActiveContact> contacts,
+                         std::span<Motion> motions) {
   std::vector<Vec2> linear(motions.size());
   std::vector<double> angular(motions.size());
   std::vector<BodyPairVector> rows;
@@ -72,9 +71,20 @@ double project_onto_contacts(const World& world, std::span<const ActiveContact> 
       motions[b].angle += angular[b];
     }
   }
+  largest = 0.0;
+  for (const ContactKinematics& ki : kinematics_of(contacts, motions)) {
+    largest = std::max(largest, std::abs(ki.gap));
+  }
+  return largest;
+}
+
+double project_onto_contacts(const World& world, std::span<const ActiveContact> contacts,
+                             std::span<Motion> motions) {
+  if (contacts.empty()) return 0.0;
+  project_positions(world, contacts, motions);
   const std::vector<ContactKinematics> k = kinematics_of(contacts, motions);
-  rows.clear();
-  values.clear();
+  std::vector<BodyPairVector> rows;
+  std::vector<double> values;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     rows.push_back(along(contacts[i], k[i].normal_row));
     values.push_back(k[i].gap_rate);
@@ -83,14 +93,14 @@ double project_onto_contacts(const World& world, std::span<const ActiveContact> 
       values.push_back(k[i].slip);
     }
   }
-  std::fill(linear.begin(), linear.end(), Vec2::Zero());
-  std::fill(angular.begin(), angular.end(), 0.0);
+  std::vector<Vec2> linear(motions.size(), Vec2::Zero());
+  std::vector<double> angular(motions.size(), 0.0);
   least_change(world, rows, values, linear, angular);
   for (std::size_t b = 0; b < motions.size(); ++b) {
     motions[b].velocity += linear[b];
     motions[b].angular_velocity += angular[b];
   }
-  largest = 0.0;
+  double largest = 0.0;
   for (const ContactKinematics& ki : kinematics_of(contacts, motions)) {
     largest = std::max(largest, std::abs(ki.gap));
   }

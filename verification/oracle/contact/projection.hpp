@@ -11,9 +11,14 @@
 
 namespace gp::oracle {
 
-/// Moves `motions` (every body's, in place) onto g = 0, ġ = 0 and, for sticking contacts, s = 0
-/// at every contact of `contacts`. Returns the largest |g| [m] left, after up to a few Newton
-/// iterations on the positions (the gaps are not linear in the angles).
+/// Moves the positions of `motions` (every body's, in place) onto g = 0 at every contact of
+/// `contacts`. Returns the largest |g| [m] left, after up to a few Newton iterations (the gaps are
+/// not linear in the angles).
+double project_positions(const World& world, std::span<const ActiveContact> contacts,
+                         std::span<Motion> motions);
+
+/// Moves `motions` onto g = 0 (project_positions), then ġ = 0 and, for sticking contacts, s = 0
+/// at every contact of `contacts`. Returns the largest |g| [m] left.
 double project_onto_contacts(const World& world, std::span<const ActiveContact> contacts,
                              std::span<Motion> motions);
 

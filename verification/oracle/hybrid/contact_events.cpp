@@ -113,6 +113,16 @@ void ContactEvents::handle(double t, double* y, std::span<const int> crossed,
     if (!dropped[i] && !redone) kept.push_back(candidates[i]);
   }
   for (std::size_t p : redetect) detect(p, motions, kept);
+  // Pairs touching within the tolerance join too, though their own roots have not fired yet:
+  // impacts a hair apart in time (a row of discs landing on another) are one simultaneous impact,
+  // not a rapid sequence of single ones.
+  std::vector<bool> in_contact(watch_.pairs().size(), false);
+  for (const ActiveContact& c : kept) in_contact[c.pair] = true;
+  for (std::size_t p = 0; p < watch_.pairs().size(); ++p) {
+    if (!in_contact[p] && watch_.distance(p, motions) <= options_.contact_tolerance) {
+      detect(p, motions, kept);
+    }
+  }
   settle(t, motions, std::move(kept), y, impacts);
 }
 
@@ -120,6 +130,9 @@ void ContactEvents::settle(double t, std::vector<Motion>& motions,
                            std::vector<ActiveContact> candidates, double* y,
                            std::vector<OracleEvent>& impacts) {
   const World& w = system_.world();
+  // Every touching pair starts exactly touching, those about to part too: one left a round-off
+  // inside the other would sit on its approach root and be found touching again at once.
+  project_positions(w, candidates, motions);
   std::vector<ContactKinematics> k = kinematics_of(candidates, motions);
   const bool approaching = std::any_of(k.begin(), k.end(), [&](const ContactKinematics& ki) {
     return ki.gap_rate < -options_.speed_tolerance;

@@ -14,6 +14,18 @@ namespace {
 // of the root finder: smaller costs more stops near contacts, larger lets grazing impacts slip by.
 constexpr double kMarginShare = 0.1;
 
+// m: how deep two hulls are into each other when their approach is an event. Not zero, so that
+// a pair that touched at an event and let go, its distance 0 up to round-off (1e-16 m), is not
+// found touching again and again; small enough that an impact is found at most 1e-12 m / v late
+// (1e-8 s at the rest speed of 1e-4 m/s, below which arrivals do not bounce anyway).
+constexpr double kApproachDepth = 1e-12;
+
+// The share of the bodies' weight (their mass times g, or times 1 m/s² without gravity) below
+// which a contact's force counts as zero: a contact that holds with no force (two bodies falling
+// together) or friction exactly at its bound would otherwise chatter on round-off. A lift-off is
+// found when the force reaches −floor, at most floor/ḟ late.
+constexpr double kForceShare = 1e-10;
+
 // m: the distance from the hull's centroid to its nearest side, plus its rounding.
 double half_thickness(const Hull& h) {
   if (h.vertices.size() < 3) return h.radius;
@@ -88,6 +100,9 @@ EventWatch::EventWatch(const World& world, double end_tolerance)
     }
   }
   in_contact_.assign(pairs_.size(), false);
+  double mass = 0.0;
+  for (const RigidBody& b : world.bodies) mass += b.type == BodyType::Dynamic ? b.mass : 0.0;
+  force_floor_ = kForceShare * mass * std::max(world.gravity.norm(), 1.0);
 }
 
 void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Motion> motions) {
@@ -147,7 +162,7 @@ void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> cont
   for (std::size_t r = 0; r < roots_.size(); ++r) {
     const Root& root = roots_[r];
     if (root.kind == RootKind::Approach) {
-      g[r] = distance(root.index, s.motions);
+      g[r] = distance(root.index, s.motions) + kApproachDepth;
       continue;
     }
     const ActiveContact& c = contacts[root.index];
@@ -155,10 +170,10 @@ void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> cont
     const ContactForce& f = s.forces[root.index];
     switch (root.kind) {
       case RootKind::LiftOff:
-        g[r] = f.normal;
+        g[r] = f.normal + force_floor_;
         break;
       case RootKind::StickLimit:
-        g[r] = c.friction * f.normal - (root.detail == 0 ? f.tangent : -f.tangent);
+        g[r] = c.friction * f.normal - (root.detail == 0 ? f.tangent : -f.tangent) + force_floor_;
         break;
       case RootKind::SlipStop:
         g[r] = c.slip_sign * k.slip;

@@ -1,7 +1,7 @@
 #pragma once
 // The events of the hybrid integration, as root functions of the state for SUNDIALS' root
 // finder, each falling through zero when its event happens:
-//   Approach   two hulls not in contact: their signed distance (contact onset);
+//   Approach   two hulls not in contact: their signed distance, plus 1e-12 m (contact onset);
 //   Landing    another vertex of a body resting on an edge: its gap to that edge's line;
 //   LiftOff    an active contact: its normal force;
 //   StickLimit a sticking contact: μ f_n ∓ f_t (friction reaches its bound: stick to slip);
@@ -56,6 +56,7 @@ class EventWatch {
  private:
   const World& world_;
   double end_tolerance_;
+  double force_floor_;  // N: a force this small counts as zero (kForceShare)
   std::vector<HullPair> pairs_;
   std::vector<double> reach_;  // m: per pair, the farthest point of hull a, then of hull b
   std::vector<Root> roots_;
