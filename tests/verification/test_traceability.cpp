@@ -74,11 +74,11 @@ TEST_CASE("Traceability: a registration must declare exactly the models its code
   CHECK(reports(analyse(inputs), "gp::im::translational_acceleration: registers uses"));
 }
 
-TEST_CASE("Traceability: an edge difference without an erratum fails the check",
-          "[traceability]") {
+TEST_CASE("Traceability: an edge difference without an erratum fails the check", "[traceability]") {
   auto inputs = repository();
   for (auto& e : inputs.errata) e.edges.clear();
-  CHECK(reports(analyse(inputs), "edge IM:col2D -> DD:torque is used by the code but not declared"));
+  CHECK(
+      reports(analyse(inputs), "edge IM:col2D -> DD:torque is used by the code but not declared"));
   CHECK(reports(analyse(inputs), "edge IM:transMot -> GD:accelGravity is declared by the SRS"));
 }
 
@@ -87,16 +87,40 @@ TEST_CASE("Traceability: tags, errata and dimensional findings must name real th
   auto inputs = repository();
   inputs.tests.push_back({"made up", "tests/x.cpp", {"DD:doesNotExist"}});
   inputs.tests.push_back({"split; name", "tests/x.cpp", {}});
-  inputs.errata.push_back({"E-X", "made up", {"DD:doesNotExist"}, "dimension", {}, {"no such test"}});
+  inputs.errata.push_back(
+      {"E-X", "made up", {"DD:doesNotExist"}, "dimension", {}, {"no such test"}});
   const auto result = analyse(inputs);
   CHECK(reports(result, "is tagged DD:doesNotExist, which is not in the SRS"));
   CHECK(reports(result, "\"split; name\" has '[', ']' or ';' in its name"));
   CHECK(reports(result, "E-X: names DD:doesNotExist, not in the SRS"));
   CHECK(reports(result, "E-X: no test is named \"no such test\""));
   auto without_dimension_errata = repository();
-  std::erase_if(without_dimension_errata.errata, [](const auto& e) { return e.kind == "dimension"; });
+  std::erase_if(without_dimension_errata.errata,
+                [](const auto& e) { return e.kind == "dimension"; });
   CHECK(reports(analyse(without_dimension_errata),
                 "DD:linDisp: fails the dimensional audit but has no erratum of kind dimension"));
+}
+
+TEST_CASE("Traceability: an erratum id cited but not in srs/errata.md fails the check",
+          "[traceability]") {
+  // The bogus id is split in two so that this file itself does not cite it.
+  const std::string text =
+      "keeps the sign (srs/errata.md, E-"
+      "NO-SUCH-ERRATUM).\n"
+      "See E-DD-LINDISP; 1E-9 m and E-X are not ids.";
+  const auto cited = citations_in("docs/x.md", text);
+  REQUIRE(cited.size() == 2);
+  CHECK(cited[0].line == 1);
+  CHECK(cited[1].id == "E-DD-LINDISP");
+  auto inputs = repository();
+  CHECK_FALSE(reports(analyse(inputs), "which srs/errata.md does not have"));
+  CHECK(inputs.citations.size() > 20);  // the scan reaches code, tests and docs
+  inputs.citations.insert(inputs.citations.end(), cited.begin(), cited.end());
+  const auto result = analyse(inputs);
+  CHECK(reports(result,
+                "docs/x.md:1: cites E-"
+                "NO-SUCH-ERRATUM, which srs/errata.md does not have"));
+  CHECK_FALSE(reports(result, "cites E-DD-LINDISP"));
 }
 
 TEST_CASE("Errata: a malformed edge or a field before any erratum is an error", "[traceability]") {

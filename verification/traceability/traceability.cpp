@@ -100,6 +100,14 @@ void check_errata(const TraceInputs& in, std::vector<std::string>& problems) {
       if (!test_names.count(name)) problems.push_back(e.id + ": no test is named \"" + name + "\"");
     }
   }
+  for (const auto& c : in.citations) {
+    const bool exists = std::any_of(in.errata.begin(), in.errata.end(),
+                                    [&](const Erratum& e) { return e.id == c.id; });
+    if (!exists) {
+      problems.push_back(c.file + ":" + std::to_string(c.line) + ": cites " + c.id +
+                         ", which srs/errata.md does not have");
+    }
+  }
 }
 
 void check_dimensions(const TraceInputs& in, std::vector<std::string>& problems) {
@@ -140,6 +148,7 @@ TraceInputs gather_trace_inputs(const std::filesystem::path& root) {
   in.calls = called_models(root, in.registrations);
   in.tests = index_tests(root, root / "tests");
   in.errata = load_errata(root / "srs" / "errata.md");
+  in.citations = erratum_citations(root);
   in.dimensions = dimensional_audit();
   return in;
 }

@@ -11,6 +11,7 @@
 #include "verification/dimensions/dimensional_audit.hpp"
 #include "verification/srs/catalog.hpp"
 #include "verification/srs/errata.hpp"
+#include "verification/srs/erratum_citations.hpp"
 #include "verification/traceability/test_index.hpp"
 
 namespace gp::verification {
@@ -22,6 +23,7 @@ struct TraceInputs {
   std::map<std::string, std::vector<std::string>> calls;  ///< model id -> model ids its file calls
   std::vector<TestCase> tests;
   std::vector<Erratum> errata;
+  std::vector<Citation> citations;  ///< erratum ids cited in code, tests and docs
   std::vector<DimensionalCheck> dimensions;
 };
 
@@ -44,7 +46,7 @@ struct TraceResult {
 
 /// Runs every traceability check: each model has one function and a test, registrations match
 /// the calls in the code, each edge difference and each failed dimensional check has an erratum,
-/// each erratum names existing items and tests.
+/// each erratum names existing items and tests, each cited erratum id exists.
 TraceResult analyse(const TraceInputs& inputs);
 
 /// Tests tagged with `id`, in index order.

@@ -6,8 +6,8 @@ namespace gp::tm {
 
 /// TM:UniversalGravLaw — Newton's law of universal gravitation.
 ///   F_g = G m₁ m₂ / ‖d‖² · d̂,   d̂ = d / ‖d‖
-/// Sign convention (see srs/errata.md, E-TM-GRAV): d points from body 1 to body 2, so the result
-/// is the attractive force on body 1 towards body 2; d̂ is dimensionless.
+/// Sign convention (see srs/errata.md, E-GRAVITY-SIGN): d points from body 1 to body 2, so the
+/// result is the attractive force on body 1 towards body 2; d̂ is dimensionless.
 /// @param G         gravitational constant [m³/(kg·s²)]
 /// @param mass1     mass m₁ of the body the force acts on [kg]
 /// @param mass2     mass m₂ of the attracting body [kg]
