@@ -34,7 +34,7 @@ gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velo
 }  // namespace
 
 TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form reflections",
-          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
   gp::Space space;
   space.add_body(wall("floor", {-1.0, 0.0}, {2.0, 0.0}, 1.0));
   space.add_body(wall("wall", {0.0, -1.0}, {0.0, 2.0}, 1.0));
@@ -54,7 +54,7 @@ TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form
 }
 
 TEST_CASE("A row of discs passes the impulse on at the closed-form times, a step apart too",
-          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
   // Four equal elastic discs in a row, 5 mm, 2 mm and 15 mm apart, the first moving at 1 m/s:
   // each impact hands the whole velocity on, at t = 5 ms, 7 ms and 22 ms. The third disc is
   // struck by the second impact, which is found only after the first, and the last gap is
@@ -85,7 +85,7 @@ TEST_CASE("A row of discs passes the impulse on at the closed-form times, a step
 }
 
 TEST_CASE("Impacts left over at the step's limit are resolved as contacts at its end",
-          "[FR:Determine-Collision-Response-Over-Time][TM:NewtonThirdLawMot]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:TM:NewtonThirdLawMot]") {
   // The row of discs with one impact a step: the first impact (5 ms) is exact, the second
   // (7 ms) is over the limit and must still be met, by the contact of the two discs at the end
   // of the step, rather than let them run 9.7 mm into each other.
@@ -109,7 +109,7 @@ TEST_CASE("Impacts left over at the step's limit are resolved as contacts at its
 }
 
 TEST_CASE("A disc dropped fast on a disc resting on the floor stops on it and adds no energy",
-          "[FR:Determine-Collision-Response-Over-Time][GD:impulse]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:GD:impulse]") {
   gp::Settings settings;
   settings.gravity = {0.0, -9.81};
   gp::Space space(settings);

@@ -46,7 +46,7 @@ Totals totals(const gp::Space& space) {
 }  // namespace
 
 TEST_CASE("Head-on collisions: equal masses exchange velocities, C_R scales the rebound",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D]") {
   const double cr = GENERATE(1.0, 0.5);
   gp::Space space;
   const auto a = space.add_body(disc("a", {-2.0, 0.0}, {2.51, 0.0}, cr));
@@ -60,7 +60,7 @@ TEST_CASE("Head-on collisions: equal masses exchange velocities, C_R scales the 
   REQUIRE(space.time() > 3.0 / 3.51);
 }
 
-TEST_CASE("The impact is found at its exact time inside the step", "[IM:col2D]") {
+TEST_CASE("The impact is found at its exact time inside the step", "[via:IM:col2D]") {
   gp::Space space;
   space.add_body(disc("a", {-2.0, 0.0}, {2.51, 0.0}, 1.0));
   space.add_body(disc("b", {2.0, 0.0}, {-1.0, 0.0}, 1.0));
@@ -76,7 +76,7 @@ TEST_CASE("The impact is found at its exact time inside the step", "[IM:col2D]")
 }
 
 TEST_CASE("Oblique elastic collision of discs conserves momentum and energy",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D][DD:kEnergy]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D][via:DD:kEnergy]") {
   gp::Space space;
   const auto a = space.add_body(disc("a", {-3.0, 0.3}, {2.51, 0.0}, 1.0));
   const auto b = space.add_body(disc("b", {0.0, 0.0}, {0.0, 0.0}, 1.0));
@@ -93,7 +93,7 @@ TEST_CASE("Oblique elastic collision of discs conserves momentum and energy",
 }
 
 TEST_CASE("An off-centre impact sets a box spinning and conserves angular momentum",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D][DD:torque]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D][via:DD:torque]") {
   gp::Space space;
   gp::BodyDef box;
   box.name = "box";
@@ -112,7 +112,7 @@ TEST_CASE("An off-centre impact sets a box spinning and conserves angular moment
 }
 
 TEST_CASE("Bouncing ball at dt = 1/60 s keeps its closed-form bounce times and heights",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D][DD:coeffRestitution]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D][via:DD:coeffRestitution]") {
   const double g = 9.81, h0 = 10.0, cr = 0.8, r = 0.5;
   gp::Settings settings;
   settings.gravity = {0.0, -g};
@@ -196,7 +196,7 @@ TEST_CASE("A 20-row pyramid of boxes stays put for 10 s",
 }
 
 TEST_CASE("Collisions conserve linear momentum in a closed box of discs",
-          "[FR:Determine-Collision-Response-Over-Time][TM:NewtonThirdLawMot]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:TM:NewtonThirdLawMot]") {
   gp::Space space;
   for (int i = 0; i < 6; ++i) {
     for (int j = 0; j < 6; ++j) {
@@ -211,7 +211,7 @@ TEST_CASE("Collisions conserve linear momentum in a closed box of discs",
 }
 
 TEST_CASE("A Newton's cradle of touching balls passes the momentum to its last ball",
-          "[IM:col2D][TM:NewtonThirdLawMot]") {
+          "[via:IM:col2D][via:TM:NewtonThirdLawMot]") {
   gp::Space space;
   std::vector<gp::BodyId> balls;
   // Touching elastic discs of radius 0.5 m; the first moves into the others at 2 m/s.

@@ -147,7 +147,7 @@ TEST_CASE("A non-finite state stops the run with the body's name and the time",
 }
 
 TEST_CASE("Orientations are reported in 0 ≤ ϕ < 2π",
-          "[DD:angDisp][FR:Calculate-Rotation-Over-Time]") {
+          "[via:DD:angDisp][FR:Calculate-Rotation-Over-Time]") {
   gp::Space space;
   auto def = ball();
   def.angle = 2.0 * std::numbers::pi;  // allowed as input, the same orientation as 0

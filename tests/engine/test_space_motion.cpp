@@ -41,7 +41,7 @@ double projectile_error(gp::IntegratorKind kind, double dt) {
 }  // namespace
 
 TEST_CASE("Projectile: velocity Verlet and RK4 are exact under constant acceleration",
-          "[FR:Calculate-Translation-Over-Time][IM:transMot]") {
+          "[FR:Calculate-Translation-Over-Time][via:IM:transMot]") {
   CHECK(projectile_error(gp::IntegratorKind::VelocityVerlet, 1.0 / 60) < 1e-12);
   CHECK(projectile_error(gp::IntegratorKind::RK4, 1.0 / 60) < 1e-12);
   // Symplectic Euler is first order: its error halves with the step.
@@ -52,7 +52,7 @@ TEST_CASE("Projectile: velocity Verlet and RK4 are exact under constant accelera
 }
 
 TEST_CASE("Constant torque spins a box up as θ = ½αt² and ω = αt",
-          "[FR:Calculate-Rotation-Over-Time][IM:rotMot]") {
+          "[FR:Calculate-Rotation-Over-Time][via:IM:rotMot]") {
   gp::Space space;
   gp::BodyDef box;
   box.name = "box";
@@ -71,7 +71,7 @@ TEST_CASE("Constant torque spins a box up as θ = ½αt² and ω = αt",
 }
 
 TEST_CASE("A time-dependent force F(t) = m cos t gives v(t) = sin t",
-          "[FR:Calculate-Translation-Over-Time][IM:transMot]") {
+          "[FR:Calculate-Translation-Over-Time][via:IM:transMot]") {
   gp::Settings settings;
   settings.integrator = gp::IntegratorKind::RK4;
   gp::Space space(settings);
@@ -85,7 +85,7 @@ TEST_CASE("A time-dependent force F(t) = m cos t gives v(t) = sin t",
   CHECK_THAT(space.state(id).position.x(), WithinAbs(1.0 - std::cos(1.0), 1e-10));
 }
 
-TEST_CASE("A force applied off the centre of mass also turns the body", "[DD:torque]") {
+TEST_CASE("A force applied off the centre of mass also turns the body", "[via:DD:torque]") {
   gp::Space space;
   gp::BodyDef rod;
   rod.name = "rod";
@@ -101,7 +101,7 @@ TEST_CASE("A force applied off the centre of mass also turns the body", "[DD:tor
 }
 
 TEST_CASE("Two bodies on a circular orbit keep radius, energy and angular momentum",
-          "[TM:UniversalGravLaw][GD:accelGravity][FR:Calculate-Translation-Over-Time]") {
+          "[via:TM:UniversalGravLaw][via:GD:accelGravity][FR:Calculate-Translation-Over-Time]") {
   // Equal masses m at distance 2r circle their common centre with v = √(G m / (4 r)) and
   // period T = 2π r / v.
   gp::Settings settings;
@@ -146,7 +146,7 @@ TEST_CASE("Static bodies never move and kinematic bodies move at their velocity"
 }
 
 TEST_CASE("The centre of mass of a body of several shapes is its reported position",
-          "[DD:ctrOfMass][DD:momentOfInertia]") {
+          "[via:DD:ctrOfMass][via:DD:momentOfInertia]") {
   gp::Space space;
   gp::BodyDef dumbbell;
   dumbbell.name = "dumbbell";

@@ -75,7 +75,7 @@ TEST_CASE("Equal masses in a head-on elastic collision exchange velocities", "[I
 }
 
 TEST_CASE("Inelastic bounce on an immovable floor keeps C_R of the normal speed",
-          "[IM:col2D][DD:coeffRestitution]") {
+          "[IM:col2D][via:DD:coeffRestitution]") {
   const CollidingBody ball{1.0 / 56.2, 0.0, {0.7, -2.51}, 0.0, {0.0, -0.412}};
   const CollidingBody floor{0.0, 0.0, Vec2::Zero(), 0.0, Vec2::Zero()};
   const auto r = gp::im::collision_response(ball, floor, {0.0, 1.0}, 0.8);

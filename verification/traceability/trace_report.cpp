@@ -106,7 +106,9 @@ void add_items(TraceFiles& files, const TraceInputs& in) {
   std::string md =
       "# SRS item -> function -> tests\n\nEach theoretical model, general definition, data "
       "definition and instance model, the C++ function that implements it (as its registration "
-      "declares) and the Catch2 test cases tagged with its id.\n\n"
+      "declares) and the Catch2 test cases tagged with its id whose body calls the function "
+      "(directly or "
+      "through the models that call it).\n\n"
       "|SRS id|label|function|file|tests|\n|:---|:---|:---|:---|:---|\n";
   std::string csv = "id,label,function,file,tests\n";
   for (const auto& model : in.catalog.models) {
