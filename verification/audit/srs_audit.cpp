@@ -65,11 +65,11 @@ std::string format_srs_audit(const SrsAudit& audit) {
       implemented_failed += d.consistent ? 0 : 1;
     }
   }
-  text += row("dimensional checks", std::to_string(written - written_failed) + " passed, " +
-                                        std::to_string(written_failed) + " failed as written (" +
-                                        failed_ids + "); " +
-                                        std::to_string(implemented - implemented_failed) + "/" +
-                                        std::to_string(implemented) + " corrected forms pass");
+  text += row("dimensional checks",
+              std::to_string(written - written_failed) + " passed, " +
+                  std::to_string(written_failed) + " failed as written (" + failed_ids + "); " +
+                  std::to_string(implemented - implemented_failed) + "/" +
+                  std::to_string(implemented) + " model functions consistent with units");
   std::map<std::string, int> kinds;
   for (const auto& e : in.errata) ++kinds[e.kind];
   std::string kind_text;

@@ -15,11 +15,18 @@ namespace gp::gd {
 /// @param mass      mass M of the attracting body [kg]
 /// @param distance  d, from the attracting body's centre of mass to the attracted point [m], d ≠ 0
 /// @return gravitational acceleration g at the attracted point [m/s²], directed towards M
-inline Vec2 gravitational_acceleration(double G, double mass, const Vec2& distance) {
+template <class Acceleration = Vec2, class GravitationalConstant = double, class Mass = double,
+          class Displacement = Vec2>
+inline Acceleration gravitational_acceleration(models::In<GravitationalConstant> G,
+                                               models::In<Mass> mass,
+                                               models::In<Displacement> distance) {
+  using Force = models::Product<Acceleration, Mass>;
   // A unit test mass makes force and acceleration numerically equal (F = m g with m = 1 kg).
-  constexpr double test_mass = 1.0;
-  return tm::acceleration_from_force(tm::gravitational_force(G, test_mass, mass, -distance),
-                                     test_mass);
+  const Mass test_mass = models::one<Mass>();
+  return tm::acceleration_from_force<Acceleration, Force, Mass>(
+      tm::gravitational_force<Force, GravitationalConstant, Mass, Displacement>(G, test_mass, mass,
+                                                                                -distance),
+      test_mass);
 }
 
 GP_REGISTER_MODEL("GD:accelGravity", gd, gravitational_acceleration, "TM:UniversalGravLaw",

@@ -13,9 +13,12 @@ namespace gp::tm {
 /// @param mass2     mass m₂ of the attracting body [kg]
 /// @param distance  d = p₂ − p₁, from body 1's centre of mass to body 2's [m], d ≠ 0
 /// @return force on body 1 [N]
-inline Vec2 gravitational_force(double G, double mass1, double mass2, const Vec2& distance) {
-  const double norm = distance.norm();
-  return G * mass1 * mass2 / (norm * norm) * (distance / norm);
+template <class Force = Vec2, class GravitationalConstant = double, class Mass = double,
+          class Displacement = Vec2>
+inline Force gravitational_force(models::In<GravitationalConstant> G, models::In<Mass> mass1,
+                                 models::In<Mass> mass2, models::In<Displacement> distance) {
+  const auto length = norm(distance);
+  return G * mass1 * mass2 / (length * length) * (distance / length);
 }
 
 GP_REGISTER_MODEL("TM:UniversalGravLaw", tm, gravitational_force);
