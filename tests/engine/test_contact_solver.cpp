@@ -70,7 +70,8 @@ TEST_CASE("Warm-started with last step's impulses, a resting box needs a single 
   CHECK(gp::solve_velocities(cold.contacts, cold.inertia, 10, 0.0, cold.state) <= 3);
 }
 
-TEST_CASE("A rotation turned slightly agrees with one built from the new angle", "[via:DD:angDisp]") {
+TEST_CASE("A rotation turned slightly agrees with one built from the new angle",
+          "[via:DD:angDisp]") {
   const gp::Rotation rotation(2.5);
   for (double turn : {1e-3, -1e-3, 3e-7, 0.0}) {
     const gp::Rotation turned = rotation.turned_slightly(turn);

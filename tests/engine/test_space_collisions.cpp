@@ -73,9 +73,9 @@ TEST_CASE("The impact is found at its exact time inside the step", "[via:IM:col2
     impacts.insert(impacts.end(), space.impacts().begin(), space.impacts().end());
   }
   REQUIRE(impacts.size() == 1);
-  CHECK_THAT(impacts[0].time, WithinRel(3.0 / 3.51, 1e-12));
+  CHECK_THAT(impacts[0].time, WithinRel(3.0 / 3.51, 1e-14));
   // j = (1 + C_R) μ v_closing with μ = m/2, m = π·0.5² kg.
-  CHECK_THAT(impacts[0].impulse, WithinRel(2.0 * (0.25 * std::numbers::pi / 2) * 3.51, 1e-12));
+  CHECK_THAT(impacts[0].impulse, WithinRel(2.0 * (0.25 * std::numbers::pi / 2) * 3.51, 1e-15));
 }
 
 TEST_CASE("Oblique elastic collision of discs conserves momentum and energy",
@@ -87,7 +87,7 @@ TEST_CASE("Oblique elastic collision of discs conserves momentum and energy",
   for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
   const Totals after = totals(space);
   CHECK_THAT((after.momentum - before.momentum).norm(), WithinAbs(0.0, 1e-15));
-  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-12));
+  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-15));
   // Equal masses, one at rest, elastic: they leave at right angles, b along the line of centres
   // at the moment of contact (offset 0.3 over a distance 1: sin θ = 0.3).
   const Vec2 va = space.state(a).velocity, vb = space.state(b).velocity;
@@ -110,7 +110,7 @@ TEST_CASE("An off-centre impact sets a box spinning and conserves angular moment
   CHECK(space.state(b).angular_velocity < 0.0);            // clockwise
   CHECK_THAT((after.momentum - before.momentum).norm(), WithinAbs(0.0, 1e-15));
   CHECK_THAT(after.angular_momentum, WithinAbs(before.angular_momentum, 2e-15));
-  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-12));
+  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-15));
   CHECK(space.state(ball).velocity.x() < 5.0);
 }
 

@@ -51,9 +51,9 @@ double sliding_distance(double friction_box, double friction_ground, double v0) 
 TEST_CASE("Friction stops a sliding box after v₀² / (2 μ g)",
           "[FR:Input-Surface-Properties][FR:Determine-Collision-Response-Over-Time]") {
   // Coulomb friction decelerates at μ g: the box slides v₀² / (2 μ g) = 0.9174 m for μ = 0.5.
-  CHECK_THAT(sliding_distance(0.5, 0.5, 3.0), WithinRel(9.0 / (2 * 0.5 * g), 0.02));
+  CHECK_THAT(sliding_distance(0.5, 0.5, 3.0), WithinRel(9.0 / (2 * 0.5 * g), 2e-4));
   // μ = √(0.2 · 0.8) = 0.4 when the two surfaces differ.
-  CHECK_THAT(sliding_distance(0.2, 0.8, 3.0), WithinRel(9.0 / (2 * 0.4 * g), 0.02));
+  CHECK_THAT(sliding_distance(0.2, 0.8, 3.0), WithinRel(9.0 / (2 * 0.4 * g), 1e-4));
 }
 
 TEST_CASE("A frictionless box keeps sliding",

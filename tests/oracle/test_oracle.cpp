@@ -227,8 +227,9 @@ TEST_CASE("Oracle: a projectile follows p0 + v0 t + g t^2 / 2",
   }
 }
 
-TEST_CASE("Oracle: a constant torque turns a body by w0 t + alpha t^2 / 2, modulo 2 pi",
-          "[via:IM:rotMot][via:TM:NewtonSecLawRotMot][via:DD:angDisp][FR:Calculate-Rotation-Over-Time]") {
+TEST_CASE(
+    "Oracle: a constant torque turns a body by w0 t + alpha t^2 / 2, modulo 2 pi",
+    "[via:IM:rotMot][via:TM:NewtonSecLawRotMot][via:DD:angDisp][FR:Calculate-Rotation-Over-Time]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   gp::Space space;
