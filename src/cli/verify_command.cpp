@@ -40,7 +40,8 @@ std::optional<verification::TestResults> test_results(
 }  // namespace
 
 int verify(const VerifyOptions& options) {
-  const auto audit = verification::run_srs_audit(options.root);
+  const auto results = test_results(options.test_results);
+  const auto audit = verification::run_srs_audit(options.root, results);
   std::cout << verification::format_srs_audit(audit) << "\n";
   verification::SuiteOptions suite;
   suite.root = options.root;
@@ -52,7 +53,7 @@ int verify(const VerifyOptions& options) {
   std::cout << "Verification suite against the SUNDIALS oracle ("
             << (options.quick ? "quick" : "full") << "):\n";
   const auto result = verification::run_suite(suite, audit_rows(audit));
-  const verification::AuditEvidence evidence{result.checks, test_results(options.test_results)};
+  const verification::AuditEvidence evidence{result.checks, results};
   std::cout << "  audit page: "
             << verification::write_audit_page(options.root, options.out, audit, evidence).string()
             << "\n";
@@ -61,9 +62,10 @@ int verify(const VerifyOptions& options) {
 
 int audit(const std::filesystem::path& root, const std::filesystem::path& out,
           const std::optional<std::filesystem::path>& results) {
-  const auto audit = verification::run_srs_audit(root);
+  const auto loaded = test_results(results);
+  const auto audit = verification::run_srs_audit(root, loaded);
   std::cout << verification::format_srs_audit(audit) << "\n";
-  const verification::AuditEvidence evidence{{}, test_results(results)};
+  const verification::AuditEvidence evidence{{}, loaded};
   std::cout << "audit page: " << verification::write_audit_page(root, out, audit, evidence).string()
             << "\n";
   return audit.passed() ? 0 : 1;

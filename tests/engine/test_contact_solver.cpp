@@ -46,7 +46,7 @@ struct RestingBox {
 }  // namespace
 
 TEST_CASE("A box on the ground is stopped in one pass, each corner carrying half its weight",
-          "[GD:impulse]") {
+          "[via:GD:impulse]") {
   RestingBox box;
   const int passes = gp::solve_velocities(box.contacts, box.inertia, 10, 1e-5, box.state);
   // The block solver meets both corners at once; the second pass finds nothing left to do.
@@ -60,7 +60,7 @@ TEST_CASE("A box on the ground is stopped in one pass, each corner carrying half
 }
 
 TEST_CASE("Warm-started with last step's impulses, a resting box needs a single pass",
-          "[GD:impulse]") {
+          "[via:GD:impulse]") {
   RestingBox box;
   for (auto& p : box.contacts.points(box.contacts[0])) p.normal_impulse = 0.5 * kGravity * kStep;
   gp::warm_start(box.contacts, box.inertia, box.state);
@@ -70,7 +70,8 @@ TEST_CASE("Warm-started with last step's impulses, a resting box needs a single 
   CHECK(gp::solve_velocities(cold.contacts, cold.inertia, 10, 0.0, cold.state) <= 3);
 }
 
-TEST_CASE("A rotation turned slightly agrees with one built from the new angle", "[DD:angDisp]") {
+TEST_CASE("A rotation turned slightly agrees with one built from the new angle",
+          "[via:DD:angDisp]") {
   const gp::Rotation rotation(2.5);
   for (double turn : {1e-3, -1e-3, 3e-7, 0.0}) {
     const gp::Rotation turned = rotation.turned_slightly(turn);
@@ -85,7 +86,7 @@ TEST_CASE("A rotation turned slightly agrees with one built from the new angle",
 }
 
 TEST_CASE("A point's arms come back from their cross products with the normal and tangent",
-          "[DD:torque]") {
+          "[via:DD:torque]") {
   for (double angle : {0.0, 0.7, 2.0, -2.9}) {
     gp::Contact c{};
     c.normal = {std::cos(angle), std::sin(angle)};
@@ -156,7 +157,7 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
 }  // namespace
 
 TEST_CASE("A position pass measures the overlap at the deepest points as their bodies turned",
-          "[DD:angDisp]") {
+          "[via:DD:angDisp]") {
   constexpr double kDepth = 1.0 / 64;  // m, exact as the float a contact point keeps
   constexpr double kTurn = 0.3;
   // A box's corner at (−0.5, −0.5) turns with the box: turned by 0.3 rad it is

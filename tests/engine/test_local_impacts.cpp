@@ -1,6 +1,9 @@
 // Impacts resolved for their own bodies inside a step (LocalImpacts): a chain of impacts within
 // one step, and one running over into the next, against the closed form, an impact on a body in
 // resting contact left to the solver, and no allocation in a step once a scene is warmed up.
+// Criteria of the closed-form checks: 3 to 10 times the error measured (Release), and no tighter
+// than rounding, 1e-15 of the value (at least 1e-15), where the engine meets the closed form
+// exactly.
 #include <catch2/catch.hpp>
 
 #include "gamephysics/gamephysics.hpp"
@@ -34,7 +37,7 @@ gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velo
 }  // namespace
 
 TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form reflections",
-          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
   gp::Space space;
   space.add_body(wall("floor", {-1.0, 0.0}, {2.0, 0.0}, 1.0));
   space.add_body(wall("wall", {0.0, -1.0}, {0.0, 2.0}, 1.0));
@@ -44,17 +47,17 @@ TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form
   // (t = 1/50 s); each elastic impact reverses one component, so after the step it has moved
   // 1 m in each direction less twice its way to each surface.
   REQUIRE(space.impacts().size() == 2);
-  CHECK_THAT(space.impacts()[0].time, WithinAbs(1.0 / 75, 1e-12));
-  CHECK_THAT(space.impacts()[1].time, WithinAbs(1.0 / 50, 1e-12));
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(1.0 / 75, 1e-13));
+  CHECK_THAT(space.impacts()[1].time, WithinAbs(1.0 / 50, 5e-14));
   const auto s = space.state(ball);
-  CHECK_THAT(s.velocity.x(), WithinAbs(30.0, 1e-9));
-  CHECK_THAT(s.velocity.y(), WithinAbs(30.0, 1e-9));
-  CHECK_THAT(s.position.x(), WithinAbs(0.1 + 0.6, 1e-9));
-  CHECK_THAT(s.position.y(), WithinAbs(0.1 + 0.4, 1e-9));
+  CHECK_THAT(s.velocity.x(), WithinAbs(30.0, 5e-14));
+  CHECK_THAT(s.velocity.y(), WithinAbs(30.0, 5e-14));
+  CHECK_THAT(s.position.x(), WithinAbs(0.1 + 0.6, 5e-12));
+  CHECK_THAT(s.position.y(), WithinAbs(0.1 + 0.4, 5e-12));
 }
 
 TEST_CASE("A row of discs passes the impulse on at the closed-form times, a step apart too",
-          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
   // Four equal elastic discs in a row, 5 mm, 2 mm and 15 mm apart, the first moving at 1 m/s:
   // each impact hands the whole velocity on, at t = 5 ms, 7 ms and 22 ms. The third disc is
   // struck by the second impact, which is found only after the first, and the last gap is
@@ -70,22 +73,22 @@ TEST_CASE("A row of discs passes the impulse on at the closed-form times, a step
   const auto d = space.add_body(disc("d", {x_d, 0.0}, {0.0, 0.0}, 1.0));
   space.step(h);
   REQUIRE(space.impacts().size() == 2);
-  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.005, 1e-12));
-  CHECK_THAT(space.impacts()[1].time, WithinAbs(0.007, 1e-12));
-  CHECK_THAT(space.state(c).velocity.x(), WithinAbs(1.0, 1e-9));
-  CHECK_THAT(space.state(c).position.x(), WithinAbs(x_c + (h - 0.007), 1e-9));
-  CHECK_THAT(space.state(d).velocity.x(), WithinAbs(0.0, 1e-9));
-  CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d, 1e-9));
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.005, 1e-15));
+  CHECK_THAT(space.impacts()[1].time, WithinAbs(0.007, 1e-15));
+  CHECK_THAT(space.state(c).velocity.x(), WithinAbs(1.0, 1e-15));
+  CHECK_THAT(space.state(c).position.x(), WithinAbs(x_c + (h - 0.007), 1e-15));
+  CHECK_THAT(space.state(d).velocity.x(), WithinAbs(0.0, 1e-15));
+  CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d, 1e-15));
   space.step(h);
   REQUIRE(space.impacts().size() == 1);
-  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.022, 1e-12));
-  CHECK_THAT(space.state(c).velocity.x(), WithinAbs(0.0, 1e-9));
-  CHECK_THAT(space.state(d).velocity.x(), WithinAbs(1.0, 1e-9));
-  CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d + (2 * h - 0.022), 1e-9));
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.022, 1e-15));
+  CHECK_THAT(space.state(c).velocity.x(), WithinAbs(0.0, 1e-15));
+  CHECK_THAT(space.state(d).velocity.x(), WithinAbs(1.0, 1e-15));
+  CHECK_THAT(space.state(d).position.x(), WithinAbs(x_d + (2 * h - 0.022), 1e-15));
 }
 
 TEST_CASE("Impacts left over at the step's limit are resolved as contacts at its end",
-          "[FR:Determine-Collision-Response-Over-Time][TM:NewtonThirdLawMot]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:TM:NewtonThirdLawMot]") {
   // The row of discs with one impact a step: the first impact (5 ms) is exact, the second
   // (7 ms) is over the limit and must still be met, by the contact of the two discs at the end
   // of the step, rather than let them run 9.7 mm into each other.
@@ -98,18 +101,18 @@ TEST_CASE("Impacts left over at the step's limit are resolved as contacts at its
   const auto c = space.add_body(disc("c", {0.4 + 0.005 + 0.002, 0.0}, {0.0, 0.0}, 1.0));
   space.step(h);
   REQUIRE(space.impacts().size() == 1);
-  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.005, 1e-12));
+  CHECK_THAT(space.impacts()[0].time, WithinAbs(0.005, 1e-15));
   const double gap = space.state(c).position.x() - space.state(b).position.x() - 0.2;
   CHECK(gap > -settings.linear_slop);
   // The contact stops b's approach; momentum is kept whatever it does.
   CHECK(space.state(c).velocity.x() >= space.state(b).velocity.x() - 1e-9);
   double momentum = 0.0;
   for (gp::BodyId id : {a, b, c}) momentum += space.mass(id) * space.state(id).velocity.x();
-  CHECK_THAT(momentum, WithinAbs(space.mass(a) * 1.0, 1e-12));
+  CHECK_THAT(momentum, WithinAbs(space.mass(a) * 1.0, 1e-15));
 }
 
 TEST_CASE("A disc dropped fast on a disc resting on the floor stops on it and adds no energy",
-          "[FR:Determine-Collision-Response-Over-Time][GD:impulse]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:GD:impulse]") {
   gp::Settings settings;
   settings.gravity = {0.0, -9.81};
   gp::Space space(settings);
@@ -136,7 +139,7 @@ TEST_CASE("A disc dropped fast on a disc resting on the floor stops on it and ad
   }
   // At rest, stacked: below on the floor, above on it.
   CHECK_THAT(space.state(above).position.y(), WithinAbs(0.3, 2e-3));
-  CHECK_THAT(space.state(above).velocity.y(), WithinAbs(0.0, 1e-3));
+  CHECK_THAT(space.state(above).velocity.y(), WithinAbs(0.0, 1e-15));
 }
 
 TEST_CASE("A step allocates nothing once the scene is warmed up", "[FR:Simulation-Space]") {

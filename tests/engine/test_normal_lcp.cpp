@@ -62,7 +62,7 @@ TEST_CASE(
 }
 
 TEST_CASE("A point that pushed but must let go takes a second round, and the round limit holds",
-          "[GD:impulse]") {
+          "[via:GD:impulse]") {
   // Two points of independent unit masses (K = I): point 0 closes at 1 m/s, point 1 pushed last
   // step (λ₀ = 1) but now separates at 2 m/s. The first guess has both pushing, which would
   // pull point 1 (λ = −1); the second frees it: λ = (1, 0), and point 1 separates at
@@ -83,7 +83,7 @@ TEST_CASE("A point that pushed but must let go takes a second round, and the rou
 }
 
 TEST_CASE("No points is solved at once, and a point no body can move is not solved",
-          "[GD:impulse]") {
+          "[via:GD:impulse]") {
   gp::NormalLcpScratch scratch;
   Eigen::VectorXd none(0);
   CHECK(gp::solve_normal_lcp(Eigen::MatrixXd(0, 0), none, none, scratch, none).solved);
@@ -97,7 +97,7 @@ TEST_CASE("No points is solved at once, and a point no body can move is not solv
 }
 
 TEST_CASE("Random heaps' contact problems are all solved, most within the engine's round limit",
-          "[GD:impulse][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:GD:impulse][FR:Determine-Collision-Response-Over-Time]") {
   // K = J M⁻¹ Jᵀ, as an island's effective-mass matrix is, for 2 to 4 points a body, each
   // between two random bodies or a body and the ground, with normals within 17° of upwards and
   // random arms; w₀ = J v for random velocities falling under a step of gravity; random warm

@@ -1,6 +1,9 @@
 // Collisions in a Space against closed forms and conservation laws: head-on and oblique impacts,
 // an off-centre impact that sets a box spinning, bounce times and heights, a stack that must stay
 // put, and a bullet that must not pass through a thin wall.
+// Criteria of the closed-form checks: 3 to 10 times the error measured (Release), and no tighter
+// than rounding, 1e-15 of the value (at least 1e-15), where the engine meets the closed form
+// exactly.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -46,7 +49,7 @@ Totals totals(const gp::Space& space) {
 }  // namespace
 
 TEST_CASE("Head-on collisions: equal masses exchange velocities, C_R scales the rebound",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D]") {
   const double cr = GENERATE(1.0, 0.5);
   gp::Space space;
   const auto a = space.add_body(disc("a", {-2.0, 0.0}, {2.51, 0.0}, cr));
@@ -54,13 +57,13 @@ TEST_CASE("Head-on collisions: equal masses exchange velocities, C_R scales the 
   for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
   // 1D closed form for equal masses: v_a' = (v_a + v_b − C_R (v_a − v_b)) / 2, and for b alike.
   const double va = 2.51, vb = -1.0;
-  CHECK_THAT(space.state(a).velocity.x(), WithinAbs((va + vb - cr * (va - vb)) / 2, 1e-12));
-  CHECK_THAT(space.state(b).velocity.x(), WithinAbs((va + vb + cr * (va - vb)) / 2, 1e-12));
+  CHECK_THAT(space.state(a).velocity.x(), WithinAbs((va + vb - cr * (va - vb)) / 2, 2e-15));
+  CHECK_THAT(space.state(b).velocity.x(), WithinAbs((va + vb + cr * (va - vb)) / 2, 5e-15));
   // They touch when the 3 m gap closes at 3.51 m/s.
   REQUIRE(space.time() > 3.0 / 3.51);
 }
 
-TEST_CASE("The impact is found at its exact time inside the step", "[IM:col2D]") {
+TEST_CASE("The impact is found at its exact time inside the step", "[via:IM:col2D]") {
   gp::Space space;
   space.add_body(disc("a", {-2.0, 0.0}, {2.51, 0.0}, 1.0));
   space.add_body(disc("b", {2.0, 0.0}, {-1.0, 0.0}, 1.0));
@@ -70,30 +73,30 @@ TEST_CASE("The impact is found at its exact time inside the step", "[IM:col2D]")
     impacts.insert(impacts.end(), space.impacts().begin(), space.impacts().end());
   }
   REQUIRE(impacts.size() == 1);
-  CHECK_THAT(impacts[0].time, WithinRel(3.0 / 3.51, 1e-12));
+  CHECK_THAT(impacts[0].time, WithinRel(3.0 / 3.51, 1e-14));
   // j = (1 + C_R) μ v_closing with μ = m/2, m = π·0.5² kg.
-  CHECK_THAT(impacts[0].impulse, WithinRel(2.0 * (0.25 * std::numbers::pi / 2) * 3.51, 1e-12));
+  CHECK_THAT(impacts[0].impulse, WithinRel(2.0 * (0.25 * std::numbers::pi / 2) * 3.51, 1e-15));
 }
 
 TEST_CASE("Oblique elastic collision of discs conserves momentum and energy",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D][DD:kEnergy]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D][via:DD:kEnergy]") {
   gp::Space space;
   const auto a = space.add_body(disc("a", {-3.0, 0.3}, {2.51, 0.0}, 1.0));
   const auto b = space.add_body(disc("b", {0.0, 0.0}, {0.0, 0.0}, 1.0));
   const Totals before = totals(space);
   for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
   const Totals after = totals(space);
-  CHECK_THAT((after.momentum - before.momentum).norm(), WithinAbs(0.0, 1e-12));
-  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-12));
+  CHECK_THAT((after.momentum - before.momentum).norm(), WithinAbs(0.0, 1e-15));
+  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-15));
   // Equal masses, one at rest, elastic: they leave at right angles, b along the line of centres
   // at the moment of contact (offset 0.3 over a distance 1: sin θ = 0.3).
   const Vec2 va = space.state(a).velocity, vb = space.state(b).velocity;
-  CHECK_THAT(va.dot(vb), WithinAbs(0.0, 1e-12));
-  CHECK_THAT(vb.normalized().y(), WithinAbs(-0.3, 1e-9));
+  CHECK_THAT(va.dot(vb), WithinAbs(0.0, 1e-15));
+  CHECK_THAT(vb.normalized().y(), WithinAbs(-0.3, 1e-15));
 }
 
 TEST_CASE("An off-centre impact sets a box spinning and conserves angular momentum",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D][DD:torque]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D][via:DD:torque]") {
   gp::Space space;
   gp::BodyDef box;
   box.name = "box";
@@ -105,14 +108,14 @@ TEST_CASE("An off-centre impact sets a box spinning and conserves angular moment
   const Totals after = totals(space);
   CHECK(std::abs(space.state(b).angular_velocity) > 0.1);  // hit above the centre: it turns
   CHECK(space.state(b).angular_velocity < 0.0);            // clockwise
-  CHECK_THAT((after.momentum - before.momentum).norm(), WithinAbs(0.0, 1e-12));
-  CHECK_THAT(after.angular_momentum, WithinAbs(before.angular_momentum, 1e-12));
-  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-12));
+  CHECK_THAT((after.momentum - before.momentum).norm(), WithinAbs(0.0, 1e-15));
+  CHECK_THAT(after.angular_momentum, WithinAbs(before.angular_momentum, 2e-15));
+  CHECK_THAT(after.energy, WithinRel(before.energy, 1e-15));
   CHECK(space.state(ball).velocity.x() < 5.0);
 }
 
 TEST_CASE("Bouncing ball at dt = 1/60 s keeps its closed-form bounce times and heights",
-          "[FR:Determine-Collision-Response-Over-Time][IM:col2D][DD:coeffRestitution]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D][via:DD:coeffRestitution]") {
   const double g = 9.81, h0 = 10.0, cr = 0.8, r = 0.5;
   gp::Settings settings;
   settings.gravity = {0.0, -g};
@@ -142,7 +145,7 @@ TEST_CASE("Bouncing ball at dt = 1/60 s keeps its closed-form bounce times and h
   REQUIRE(bounce_times.size() >= 3);
   double expected = std::sqrt(2 * h0 / g), speed = cr * v1;
   for (std::size_t k = 0; k < 3; ++k) {
-    CHECK_THAT(bounce_times[k], WithinAbs(expected, 1e-9));
+    CHECK_THAT(bounce_times[k], WithinAbs(expected, 5e-14));
     expected += 2 * speed / g;
     speed *= cr;
   }
@@ -196,7 +199,7 @@ TEST_CASE("A 20-row pyramid of boxes stays put for 10 s",
 }
 
 TEST_CASE("Collisions conserve linear momentum in a closed box of discs",
-          "[FR:Determine-Collision-Response-Over-Time][TM:NewtonThirdLawMot]") {
+          "[FR:Determine-Collision-Response-Over-Time][via:TM:NewtonThirdLawMot]") {
   gp::Space space;
   for (int i = 0; i < 6; ++i) {
     for (int j = 0; j < 6; ++j) {
@@ -206,12 +209,12 @@ TEST_CASE("Collisions conserve linear momentum in a closed box of discs",
   }
   const Totals before = totals(space);
   for (int k = 0; k < 300; ++k) space.step(1.0 / 60);
-  CHECK_THAT((totals(space).momentum - before.momentum).norm(), WithinAbs(0.0, 1e-11));
+  CHECK_THAT((totals(space).momentum - before.momentum).norm(), WithinAbs(0.0, 5e-15));
   CHECK(totals(space).energy <= before.energy * (1 + 1e-12));  // C_R < 1 loses, never gains
 }
 
 TEST_CASE("A Newton's cradle of touching balls passes the momentum to its last ball",
-          "[IM:col2D][TM:NewtonThirdLawMot]") {
+          "[via:IM:col2D][via:TM:NewtonThirdLawMot]") {
   gp::Space space;
   std::vector<gp::BodyId> balls;
   // Touching elastic discs of radius 0.5 m; the first moves into the others at 2 m/s.
@@ -223,6 +226,6 @@ TEST_CASE("A Newton's cradle of touching balls passes the momentum to its last b
   space.step(1.0 / 60);
   // The sequential model of simultaneous impacts: each pair exchanges its velocities in turn.
   for (int i = 0; i < 4; ++i) CHECK(space.state(balls[i]).velocity.norm() < 1e-12);
-  CHECK_THAT(space.state(balls[4]).velocity.x(), WithinAbs(2.0, 1e-12));
-  CHECK_THAT(space.state(balls[4]).position.x(), WithinAbs(3.0 + 2.0 / 60, 1e-12));
+  CHECK_THAT(space.state(balls[4]).velocity.x(), WithinAbs(2.0, 2e-15));
+  CHECK_THAT(space.state(balls[4]).position.x(), WithinAbs(3.0 + 2.0 / 60, 5e-15));
 }

@@ -1,5 +1,7 @@
 // GD checks against measured physics (surface gravity of the Earth) and against the conservation
 // and restitution laws the impulse must satisfy.
+// Criteria: rounding of a few operations, measured 0 to 3e-14; exact results are held to a few
+// ulps (1e-15 relative), so that a change of evaluation order alone does not fail them.
 #include <catch2/catch.hpp>
 
 #include "gamephysics/models.hpp"
@@ -13,7 +15,7 @@ TEST_CASE("Gravitational acceleration at the Earth's surface is about 9.82 m/s²
   const double G = 6.6743e-11, earth_mass = 5.9722e24, earth_radius = 6.371e6;
   const Vec2 g = gp::gd::gravitational_acceleration(G, earth_mass, Vec2{0.0, earth_radius});
   // Measured standard gravity is 9.80665 m/s² including the centrifugal term (~0.03 m/s²).
-  CHECK_THAT(g.norm(), WithinAbs(9.82, 0.01));
+  CHECK_THAT(g.norm(), WithinAbs(9.82, 1e-3));
   CHECK(g.y() < 0.0);  // towards the centre of the Earth
   CHECK(g.x() == 0.0);
 }
@@ -50,7 +52,7 @@ TEST_CASE("Collision impulse of a 1D head-on collision matches the closed form",
   const double ma = 56.2, mb = 74.5, cr = 0.8, closing = 2.51;
   const double j = gp::gd::collision_impulse(cr, Vec2{-closing, 0.0}, Vec2{1.0, 0.0}, 1.0 / ma,
                                              1.0 / mb, 0.0, 0.0, Vec2::Zero(), Vec2::Zero());
-  CHECK_THAT(j, WithinRel((1.0 + cr) * ma * mb / (ma + mb) * closing, 1e-14));
+  CHECK_THAT(j, WithinRel((1.0 + cr) * ma * mb / (ma + mb) * closing, 1e-15));
 }
 
 TEST_CASE("Collision impulse with rotation obeys restitution and conserves momentum",
@@ -67,7 +69,7 @@ TEST_CASE("Collision impulse with rotation obeys restitution and conserves momen
   apply(a, j * n);
   apply(b, -j * n);
   const Vec2 vf = contact_velocity(a) - contact_velocity(b);
-  CHECK_THAT(vf.dot(n), WithinAbs(-cr * vi.dot(n), 1e-12));
-  CHECK_THAT(gp::dd::coefficient_of_restitution(vf, vi, n), WithinAbs(cr, 1e-12));
-  CHECK_THAT((a.m * a.v + b.m * b.v - momentum_before).norm(), WithinAbs(0.0, 1e-12));
+  CHECK_THAT(vf.dot(n), WithinAbs(-cr * vi.dot(n), 1e-13));
+  CHECK_THAT(gp::dd::coefficient_of_restitution(vf, vi, n), WithinAbs(cr, 1e-13));
+  CHECK_THAT((a.m * a.v + b.m * b.v - momentum_before).norm(), WithinAbs(0.0, 1e-13));
 }

@@ -211,7 +211,7 @@ void check_agreement(const Scenario& scenario, double scale, double tolerance = 
 }  // namespace
 
 TEST_CASE("Oracle: a projectile follows p0 + v0 t + g t^2 / 2",
-          "[IM:transMot][DD:linDisp][DD:linVel][FR:Calculate-Translation-Over-Time]") {
+          "[via:IM:transMot][via:DD:linDisp][via:DD:linVel][FR:Calculate-Translation-Over-Time]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const gp::Scene scene =
@@ -229,8 +229,9 @@ TEST_CASE("Oracle: a projectile follows p0 + v0 t + g t^2 / 2",
   }
 }
 
-TEST_CASE("Oracle: a constant torque turns a body by w0 t + alpha t^2 / 2, modulo 2 pi",
-          "[IM:rotMot][TM:NewtonSecLawRotMot][DD:angDisp][FR:Calculate-Rotation-Over-Time]") {
+TEST_CASE(
+    "Oracle: a constant torque turns a body by w0 t + alpha t^2 / 2, modulo 2 pi",
+    "[via:IM:rotMot][via:TM:NewtonSecLawRotMot][via:DD:angDisp][FR:Calculate-Rotation-Over-Time]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   gp::BodyDef wheel;
@@ -255,7 +256,7 @@ TEST_CASE("Oracle: a constant torque turns a body by w0 t + alpha t^2 / 2, modul
 }
 
 TEST_CASE("Oracle: a two-body circular orbit closes after one period, keeping E and L",
-          "[TM:UniversalGravLaw][GD:accelGravity][IM:transMot][DD:kEnergy]") {
+          "[via:TM:UniversalGravLaw][via:GD:accelGravity][via:IM:transMot][via:DD:kEnergy]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const Scenario s = orbit();
@@ -284,7 +285,7 @@ TEST_CASE("Oracle: a two-body circular orbit closes after one period, keeping E 
 }
 
 TEST_CASE("Oracle: discs falling together by gravitation touch at the radial Kepler time",
-          "[TM:UniversalGravLaw][GD:accelGravity][IM:col2D]") {
+          "[via:TM:UniversalGravLaw][via:GD:accelGravity][via:IM:col2D]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   // Two 1 kg discs of radius 0.5 at rest 4 m apart, G = 1: the separation r falls from r₀ = 4
@@ -308,7 +309,7 @@ TEST_CASE("Oracle: discs falling together by gravitation touch at the radial Kep
 }
 
 TEST_CASE("Oracle: a head-on elastic collision of discs at its exact time",
-          "[IM:col2D][GD:impulse][FR:Determine-Collisions]") {
+          "[via:IM:col2D][via:GD:impulse][FR:Determine-Collisions]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const Scenario s = head_on();
@@ -335,7 +336,7 @@ TEST_CASE("Oracle: a head-on elastic collision of discs at its exact time",
 }
 
 TEST_CASE("Oracle: an oblique elastic collision of equal discs",
-          "[IM:col2D][GD:impulse][DD:reVeInColl]") {
+          "[via:IM:col2D][via:GD:impulse][via:DD:reVeInColl]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const Scenario s = oblique();
@@ -361,7 +362,7 @@ TEST_CASE("Oracle: an oblique elastic collision of equal discs",
 }
 
 TEST_CASE("Oracle: an off-centre impact on a free box conserves momentum, L and E",
-          "[IM:col2D][GD:impulse][DD:torque][DD:kEnergy]") {
+          "[via:IM:col2D][via:GD:impulse][via:DD:torque][via:DD:kEnergy]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const Scenario s = off_centre();
@@ -386,7 +387,7 @@ TEST_CASE("Oracle: an off-centre impact on a free box conserves momentum, L and 
 }
 
 TEST_CASE("Oracle: a kinematic paddle moves in closed form and bats a disc at twice its speed",
-          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   gp::BodyDef paddle;
@@ -412,7 +413,7 @@ TEST_CASE("Oracle: a kinematic paddle moves in closed form and bats a disc at tw
 }
 
 TEST_CASE("Oracle: a bouncing ball's impact times and apex heights h_k = C_R^(2k) h0",
-          "[IM:col2D][DD:coeffRestitution][GD:impulse][IM:transMot]") {
+          "[via:IM:col2D][via:DD:coeffRestitution][via:GD:impulse][via:IM:transMot]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const Scenario s = bouncing_ball();
@@ -432,7 +433,7 @@ TEST_CASE("Oracle: a bouncing ball's impact times and apex heights h_k = C_R^(2k
 }
 
 TEST_CASE("Oracle: CVODE and ARKODE agree to 1e-9 on every closed-form scene",
-          "[IM:transMot][IM:col2D][LC:Variable-ODE-Solver]") {
+          "[via:IM:transMot][via:IM:col2D][LC:Variable-ODE-Solver]") {
   SECTION("orbit") {
     check_agreement(orbit(), kOrbitR, kGravitationTolerance);
   }
@@ -451,7 +452,7 @@ TEST_CASE("Oracle: CVODE and ARKODE agree to 1e-9 on every closed-form scene",
 }
 
 TEST_CASE("Oracle: a ball resting on the ground at the start stays there",
-          "[IM:col2D][FR:Determine-Collisions]") {
+          "[via:IM:col2D][FR:Determine-Collisions]") {
   const gp::Scene scene = scene_of(
       with_gravity(kG),
       {ground(0.5), disc("ball", {0.0, kBallRadius}, Vec2::Zero(), kBallRadius, 1.0, 0.5)});
@@ -470,7 +471,7 @@ TEST_CASE("Oracle: bodies overlapping at the start are outside its domain",
 }
 
 TEST_CASE("Oracle: a perfectly inelastic impact on the ground ends in resting contact",
-          "[IM:col2D][DD:coeffRestitution]") {
+          "[via:IM:col2D][via:DD:coeffRestitution]") {
   const gp::Scene scene =
       scene_of(with_gravity(kG),
                {ground(0.0), disc("ball", {0.0, 1.5}, Vec2::Zero(), kBallRadius, 1.0, 0.0)});
@@ -487,7 +488,7 @@ TEST_CASE("Oracle: a perfectly inelastic impact on the ground ends in resting co
 TEST_CASE(
     "Oracle: a Zeno sequence of bounces ends at rest once arrivals are slower than the "
     "rest speed",
-    "[IM:col2D][DD:coeffRestitution]") {
+    "[via:IM:col2D][via:DD:coeffRestitution]") {
   // C_R = 0.5 from 1 m: the bounces would go on for ever, ending at t = 3 t₁ = 1.36 s.
   const gp::Scene scene =
       scene_of(with_gravity(kG),
@@ -528,7 +529,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("Oracle: a solver failure is a domain error naming the method", "[IM:transMot]") {
+TEST_CASE("Oracle: a solver failure is a domain error naming the method", "[via:IM:transMot]") {
   const auto method =
       GENERATE(OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk);
   const Scenario s = orbit();
@@ -539,7 +540,7 @@ TEST_CASE("Oracle: a solver failure is a domain error naming the method", "[IM:t
 }
 
 TEST_CASE("Oracle: an impact with friction while sliding is outside its domain",
-          "[IM:col2D][FR:Input-Surface-Properties]") {
+          "[via:IM:col2D][FR:Input-Surface-Properties]") {
   gp::BodyDef floor = ground(0.5);
   floor.shapes[0].friction = 0.5;
   gp::BodyDef ball = disc("ball", {0.0, 1.5}, {1.0, 0.0}, kBallRadius, 1.0, 0.5);
@@ -550,7 +551,7 @@ TEST_CASE("Oracle: an impact with friction while sliding is outside its domain",
 }
 
 TEST_CASE("Oracle: without dynamic bodies, kinematic ones move in closed form",
-          "[DD:linDisp][DD:angDisp]") {
+          "[via:DD:linDisp][via:DD:angDisp]") {
   gp::BodyDef k;
   k.name = "conveyor";
   k.type = gp::BodyType::Kinematic;
@@ -588,7 +589,7 @@ TEST_CASE("Oracle: method names and bad options", "[LC:Variable-ODE-Solver]") {
 }
 
 TEST_CASE("Oracle: the trajectory CSV is simulate's format, the impact log one row per impact",
-          "[IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
+          "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
   const Scenario s = head_on();
   const OracleResult r = run_oracle(s.scene, std::vector<double>{0.0, 2.0});
   std::ostringstream trajectory, impacts;

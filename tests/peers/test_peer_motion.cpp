@@ -40,9 +40,10 @@ TEST_CASE("Chipmunk2D moves a projectile as position-first symplectic Euler to 1
   const double n = steps;
   const Vec2 x = x0 + v0 * n * h + g * h * h * n * (n - 1) / 2;
   const Vec2 v = v0 + g * n * h;
-  CHECK_THAT(s.position.x(), WithinAbs(x.x(), 1e-12));
-  CHECK_THAT(s.position.y(), WithinAbs(x.y(), 1e-12));
-  CHECK_THAT(s.velocity.y(), WithinAbs(v.y(), 1e-12));
+  // Criteria 3 to 10 times the rounding measured (3.6e-14, 5.3e-15, 7.1e-15).
+  CHECK_THAT(s.position.x(), WithinAbs(x.x(), 2e-13));
+  CHECK_THAT(s.position.y(), WithinAbs(x.y(), 2e-14));
+  CHECK_THAT(s.velocity.y(), WithinAbs(v.y(), 5e-14));
   CHECK(s.velocity.x() == v0.x());
 }
 

@@ -86,9 +86,9 @@ TEST_CASE("SRS: instance-model constraints order vectors and forbid negative rot
 
 TEST_CASE("SRS: eight data definitions are used by no other item", "[srs]") {
   const auto& c = catalog();
-  for (const std::string id : {"DD:chaslesThm", "DD:torque", "DD:kEnergy", "DD:coeffRestitution",
-                               "DD:reVeInColl", "DD:impulseV", "DD:potEnergy",
-                               "DD:momentOfInertia"}) {
+  for (const std::string id :
+       {"DD:chaslesThm", "DD:torque", "DD:kEnergy", "DD:coeffRestitution", "DD:reVeInColl",
+        "DD:impulseV", "DD:potEnergy", "DD:momentOfInertia"}) {
     INFO(id);
     for (const auto& [from, to] : c.items_vs_items) CHECK(to != id);
   }
@@ -115,8 +115,7 @@ TEST_CASE("SRS: FR:Input-Surface-Properties asks for friction that A:dampingInvo
              Catch::Contains("no friction forces"));
 }
 
-TEST_CASE("SRS: the NFRs bound learning time from below and name another product",
-          "[srs]") {
+TEST_CASE("SRS: the NFRs bound learning time from below and name another product", "[srs]") {
   const auto& nfr = catalog().nonfunctional_requirements;
   CHECK_THAT(text_of(nfr, "NFR:Usability"), Catch::Contains("no less than 30 to 60 minutes"));
   CHECK_THAT(text_of(nfr, "NFR:Understandability"), Catch::Contains("Tamias2D"));
@@ -155,4 +154,109 @@ TEST_CASE("SRS: names and descriptions with slips", "[srs]") {
     t_c |= s.at("description") == "denotes the time at collision";
   }
   CHECK(t_c);  // rendered by the SRS as "is the denotes the time at collision"
+}
+
+namespace {
+std::string description_of(const std::string& id, const std::string& symbol) {
+  for (const auto& s : model(id).at("symbols")) {
+    if (s.at("symbol") == symbol) return s.at("description");
+  }
+  return "";
+}
+bool traced(const std::vector<gp::verification::Edge>& edges, const std::string& from,
+            const std::string& to) {
+  for (const auto& edge : edges) {
+    if (edge == gp::verification::Edge{from, to}) return true;
+  }
+  return false;
+}
+}  // namespace
+
+TEST_CASE("SRS: j is the impulse and the index of a body", "[srs]") {
+  CHECK(description_of("GD:impulse", "j") == "impulse (scalar)");
+  CHECK(description_of("IM:col2D", "j") == "impulse (scalar)");
+  CHECK(description_of("IM:transMot", "{\\boldsymbol{F}_{j}}") ==
+        "force applied to the j-th body at time t");
+}
+
+TEST_CASE("SRS: A and B are points in one model and bodies in the next", "[srs]") {
+  CHECK(description_of("DD:chaslesThm", "{\\boldsymbol{v}\\text{(}t\\text{)}_{\\text{B}}}") ==
+        "velocity at point B");
+  CHECK(description_of("IM:col2D", "{\\boldsymbol{v}\\text{(}t\\text{)}_{\\text{A}}}") ==
+        "velocity at point A");
+  CHECK(description_of("GD:impulse", "{m_{\\text{A}}}") == "mass of rigid body A");
+}
+
+TEST_CASE("SRS: d is a scalar distance and a vector named a distance, of no stated direction",
+          "[srs]") {
+  CHECK(description_of("DD:momentOfInertia", "{d_{j}}") ==
+        "distance between the j-th particle and the axis of rotation");
+  CHECK(description_of("TM:UniversalGravLaw", "\\boldsymbol{d}") ==
+        "distance between the center of mass of the rigid bodies");
+}
+
+TEST_CASE("SRS: the collision normal and the contact arms have no direction or definition",
+          "[srs]") {
+  CHECK(description_of("GD:impulse", "\\boldsymbol{n}") == "collision normal vector");
+  // u_AP and u_BP appear only inside ‖u_AP * n‖ and ‖u_BP * n‖.
+  CHECK(description_of("GD:impulse", "{\\boldsymbol{u}_{\\text{A}\\text{P}}}").empty());
+  CHECK_FALSE(description_of("GD:impulse",
+                             "|{\\boldsymbol{u}_{\\text{A}\\text{P}}}\\text{*}\\boldsymbol{n}|")
+                  .empty());
+}
+
+TEST_CASE("SRS: no assumption states the direction of positive rotation or instant collisions",
+          "[srs]") {
+  CHECK_THAT(text_of(catalog().assumptions, "A:axesDefined"),
+             Catch::Equals("The axes are defined using right-handed coordinate system."));
+  for (const auto& a : catalog().assumptions) {
+    INFO(a.id);
+    CHECK_THAT(a.text, !Catch::Contains("clockwise") && !Catch::Contains("instant") &&
+                           !Catch::Contains("impuls") && !Catch::Contains("uniform"));
+  }
+}
+
+TEST_CASE("SRS: the assumption matrix leaves out assumptions the models use", "[srs]") {
+  const auto& marks = catalog().assumptions_vs_items;
+  CHECK(traced(marks, "GD:impulse", "A:collisionType"));  // the reading works
+  CHECK_FALSE(traced(marks, "GD:impulse", "A:dampingInvolvement"));
+  CHECK_FALSE(traced(marks, "DD:chaslesThm", "A:axesDefined"));
+  CHECK_FALSE(traced(marks, "DD:chaslesThm", "A:objectDimension"));
+  for (const auto& [item, assumption] : marks) CHECK(item != "DD:torque");
+}
+
+TEST_CASE("SRS: derivations that use Newton's second law are not traced to it", "[srs]") {
+  const auto& uses = catalog().items_vs_items;
+  // GD:accelGravity equates the force with m g; DD:impulseV starts from F = m a.
+  CHECK_THAT(model("GD:accelGravity").at("derivation").at(2).get<std::string>(),
+             Catch::EndsWith("=m\\,\\boldsymbol{g}"));
+  CHECK_THAT(model("DD:impulseV").at("derivation").at(0).get<std::string>(),
+             Catch::StartsWith("\\boldsymbol{F}=m\\,\\boldsymbol{a}"));
+  CHECK(traced(uses, "GD:accelGravity", "TM:UniversalGravLaw"));  // the reading works
+  CHECK_FALSE(traced(uses, "GD:accelGravity", "TM:NewtonSecLawMot"));
+  CHECK_FALSE(traced(uses, "DD:impulseV", "TM:NewtonSecLawMot"));
+}
+
+TEST_CASE("SRS: the derivations of the instance models reach F/m and τ/I by a derivative",
+          "[srs][IM:transMot][IM:rotMot]") {
+  // Two steps each: a derivative, then the equation; no step states F = m a or τ = I α.
+  for (const std::string id : {"IM:transMot", "IM:rotMot"}) {
+    INFO(id);
+    const auto& steps = model(id).at("derivation");
+    REQUIRE(steps.size() == 2);
+    CHECK_THAT(steps.at(0).get<std::string>(), Catch::Contains("\\,dt}"));
+    CHECK(steps.at(1) == model(id).at("equation"));
+  }
+  CHECK_FALSE(model("GD:impulse").contains("derivation"));
+}
+
+TEST_CASE("SRS: notes and descriptions that name the wrong quantity", "[srs]") {
+  CHECK_THAT(model("IM:col2D").at("notes").at(0).get<std::string>(),
+             Catch::Contains("initial conditions for position, velocity, orientation, and "
+                             "angular acceleration"));
+  CHECK_THAT(text_of(catalog().goals, "GS:Determine-Angular-Properties"),
+             Catch::Contains("angular velocities"));
+  CHECK(description_of("IM:transMot", "{m_{j}}") == "mass of the j-th particle");
+  CHECK_THAT(model("DD:chaslesThm").at("notes").at(0).get<std::string>(),
+             Catch::Contains("at the origin (axis of rotation)"));
 }

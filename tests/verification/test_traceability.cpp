@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "verification/traceability/test_calls.hpp"
 #include "verification/traceability/trace_report.hpp"
 
 using namespace gp::verification;
@@ -62,7 +63,54 @@ TEST_CASE("Traceability: deleting the only test of a model fails the check", "[t
   const auto* only = tests_of(inputs, lone).front();
   inputs.tests.erase(std::find_if(inputs.tests.begin(), inputs.tests.end(),
                                   [&](const TestCase& t) { return t.name == only->name; }));
-  CHECK(reports(analyse(inputs), lone + ": no test is tagged with it"));
+  CHECK(reports(analyse(inputs), lone + ": no test"));
+}
+
+TEST_CASE("Traceability: a test tagged with a model must call its function", "[traceability]") {
+  auto inputs = repository();
+  const auto add = [&](const std::string& name, const std::string& tag, const std::string& body) {
+    inputs.tests.push_back({name, "tests/x.cpp", {tag}, body});
+    inputs.test_calls[name] = models_called(body, inputs.registrations);
+  };
+  add("tag only", "DD:torque", "CHECK(0.5 * 2.0 == 1.0);");
+  add("calls it", "DD:torque", "CHECK(gp::dd::torque(Vec2{1, 0}, Vec2{0, 2}) == 2.0);");
+  auto result = analyse(inputs);
+  CHECK(reports(result, "\"tag only\" is tagged DD:torque but does not call gp::dd::torque"));
+  CHECK_FALSE(reports(result, "\"calls it\" is tagged"));
+  // Tagged "via:", a test through the engine is listed but neither required to call nor counted.
+  add("through the engine", "via:DD:torque", "CHECK(space.step() == 1);");
+  CHECK_FALSE(reports(analyse(inputs), "\"through the engine\""));
+  // A model whose tagged tests all fail to call its function is not tested.
+  for (auto& t : inputs.tests) {
+    if (std::erase(t.tags, "DD:kEnergy")) t.tags.push_back("via:DD:kEnergy");
+  }
+  add("energy by hand", "DD:kEnergy", "CHECK(0.5 * 2.0 == 1.0);");
+  CHECK(
+      reports(analyse(inputs), "DD:kEnergy: no test tagged with it calls gp::dd::kinetic_energy"));
+}
+
+TEST_CASE("Traceability: with results, only a passing test that calls the function counts",
+          "[traceability]") {
+  auto inputs = repository();
+  inputs.results = TestResults{};
+  for (const auto& t : inputs.tests) (*inputs.results)[t.name] = true;
+  CHECK_FALSE(reports(analyse(inputs), "passed"));
+  for (const auto* t : tests_of(inputs, "DD:torque")) (*inputs.results)[t->name] = false;
+  CHECK(reports(analyse(inputs), "DD:torque: no test that calls gp::dd::torque passed"));
+}
+
+TEST_CASE("Test index: calls through other models count, braces in literals do not",
+          "[traceability]") {
+  const auto called = models_called("const auto r = gp::im::collision_response(a, b, n, 1.0);",
+                                    repository().registrations);
+  CHECK(called == std::set<std::string>{"IM:col2D", "DD:chaslesThm", "DD:reVeInColl", "GD:impulse",
+                                        "TM:NewtonThirdLawMot", "DD:impulseV", "DD:torque"});
+  CHECK(
+      models_called("torque(r, F); tm::reaction_force_of(F);", repository().registrations).empty());
+  const std::string source =
+      "TEST_CASE(\"t\", \"[x]\") { s = \"}\"; c = '}'; // }\n"
+      "j = R\"({ \"a\": 1 })\"; /* } */ dd::torque(r, F); }\nafter";
+  CHECK_THAT(braced_body(source, 0), Catch::EndsWith("dd::torque(r, F); "));
 }
 
 TEST_CASE("Traceability: a registration must declare exactly the models its code calls",
@@ -74,29 +122,53 @@ TEST_CASE("Traceability: a registration must declare exactly the models its code
   CHECK(reports(analyse(inputs), "gp::im::translational_acceleration: registers uses"));
 }
 
-TEST_CASE("Traceability: an edge difference without an erratum fails the check",
-          "[traceability]") {
+TEST_CASE("Traceability: an edge difference without an erratum fails the check", "[traceability]") {
   auto inputs = repository();
   for (auto& e : inputs.errata) e.edges.clear();
-  CHECK(reports(analyse(inputs), "edge IM:col2D -> DD:torque is used by the code but not declared"));
+  CHECK(
+      reports(analyse(inputs), "edge IM:col2D -> DD:torque is used by the code but not declared"));
   CHECK(reports(analyse(inputs), "edge IM:transMot -> GD:accelGravity is declared by the SRS"));
 }
 
 TEST_CASE("Traceability: tags, errata and dimensional findings must name real things",
           "[traceability]") {
   auto inputs = repository();
-  inputs.tests.push_back({"made up", "tests/x.cpp", {"DD:doesNotExist"}});
-  inputs.tests.push_back({"split; name", "tests/x.cpp", {}});
-  inputs.errata.push_back({"E-X", "made up", {"DD:doesNotExist"}, "dimension", {}, {"no such test"}});
+  inputs.tests.push_back({"made up", "tests/x.cpp", {"DD:doesNotExist"}, ""});
+  inputs.tests.push_back({"split; name", "tests/x.cpp", {}, ""});
+  inputs.errata.push_back(
+      {"E-X", "made up", {"DD:doesNotExist"}, "dimension", {}, {"no such test"}});
   const auto result = analyse(inputs);
   CHECK(reports(result, "is tagged DD:doesNotExist, which is not in the SRS"));
   CHECK(reports(result, "\"split; name\" has '[', ']' or ';' in its name"));
   CHECK(reports(result, "E-X: names DD:doesNotExist, not in the SRS"));
   CHECK(reports(result, "E-X: no test is named \"no such test\""));
   auto without_dimension_errata = repository();
-  std::erase_if(without_dimension_errata.errata, [](const auto& e) { return e.kind == "dimension"; });
+  std::erase_if(without_dimension_errata.errata,
+                [](const auto& e) { return e.kind == "dimension"; });
   CHECK(reports(analyse(without_dimension_errata),
                 "DD:linDisp: fails the dimensional audit but has no erratum of kind dimension"));
+}
+
+TEST_CASE("Traceability: an erratum id cited but not in srs/errata.md fails the check",
+          "[traceability]") {
+  // The bogus id is split in two so that this file itself does not cite it.
+  const std::string text =
+      "keeps the sign (srs/errata.md, E-"
+      "NO-SUCH-ERRATUM).\n"
+      "See E-DD-LINDISP; 1E-9 m and E-X are not ids.";
+  const auto cited = citations_in("docs/x.md", text);
+  REQUIRE(cited.size() == 2);
+  CHECK(cited[0].line == 1);
+  CHECK(cited[1].id == "E-DD-LINDISP");
+  auto inputs = repository();
+  CHECK_FALSE(reports(analyse(inputs), "which srs/errata.md does not have"));
+  CHECK(inputs.citations.size() > 20);  // the scan reaches code, tests and docs
+  inputs.citations.insert(inputs.citations.end(), cited.begin(), cited.end());
+  const auto result = analyse(inputs);
+  CHECK(reports(result,
+                "docs/x.md:1: cites E-"
+                "NO-SUCH-ERRATUM, which srs/errata.md does not have"));
+  CHECK_FALSE(reports(result, "cites E-DD-LINDISP"));
 }
 
 TEST_CASE("Errata: a malformed edge or a field before any erratum is an error", "[traceability]") {

@@ -28,7 +28,7 @@ Recorded record(const std::string& file, const gp::SceneOverrides& overrides = {
 }  // namespace
 
 TEST_CASE("The viewer's energies of the bouncing ball are the hand-computed ones",
-          "[DD:kEnergy][DD:potEnergy]") {
+          "[via:DD:kEnergy][via:DD:potEnergy]") {
   const auto r = record("bouncing_ball.json", {std::nullopt, std::nullopt, 2.5, std::nullopt});
   const auto& frames = r.recording.frames;
   REQUIRE(frames.size() == 151);  // every 1/60 s from 0 to 2.5 s, as simulate writes them
@@ -51,7 +51,7 @@ TEST_CASE("The viewer's energies of the bouncing ball are the hand-computed ones
 }
 
 TEST_CASE("The viewer records the first bounce with the impulse of GD:impulse",
-          "[GD:impulse][IM:col2D]") {
+          "[via:GD:impulse][via:IM:col2D]") {
   const auto r = record("bouncing_ball.json", {std::nullopt, std::nullopt, 2.0, std::nullopt});
   REQUIRE(r.recording.impacts.size() == 1);
   const gp::Impact& impact = r.recording.impacts[0];
@@ -80,7 +80,7 @@ TEST_CASE("The viewer's resting contacts of a box stack carry its weight",
 }
 
 TEST_CASE("The viewer's rotational energy of the spinning box is I omega squared over 2",
-          "[DD:kEnergy]") {
+          "[via:DD:kEnergy]") {
   const auto r = record("spinning_box.json");
   const double I = 1.0 / 6.0;
   for (const auto& f : r.recording.frames) {

@@ -63,9 +63,11 @@ std::string check_table(const std::vector<Check>& checks, const std::string& id)
 std::string tests_list(const TraceInputs& in, const AuditEvidence& evidence,
                        const std::string& id) {
   const auto tests = tests_of(in, id);
-  if (tests.empty()) return "<p>Tests: none tagged with this id.</p>";
+  const auto through_engine = tests_through_engine(in, id);
+  if (tests.empty()) return "<p>Tests: none tagged with this id calls its function.</p>";
   const auto& results = evidence.test_results;
-  std::string html = "<p>Catch2 test cases tagged <code>[" + html_escape(id) + "]</code>" +
+  std::string html = "<p>Catch2 test cases tagged <code>[" + html_escape(id) +
+                     "]</code> that call its function" +
                      (results ? ", with their results:" : " (results: give --test-results)") +
                      "</p><ul class=\"tests\">";
   for (const TestCase* t : tests) {
@@ -79,7 +81,14 @@ std::string tests_list(const TraceInputs& in, const AuditEvidence& evidence,
     html += "<li>" + result + html_escape(t->name) + " <span class=\"label\">(" +
             html_escape(t->file) + ")</span></li>";
   }
-  return html + "</ul>";
+  html += "</ul>";
+  if (!through_engine.empty()) {
+    html +=
+        "<p>Exercised through the engine or the oracle (tagged <code>[via:" + html_escape(id) +
+        "]</code>; not counted as testing the function): " + std::to_string(through_engine.size()) +
+        " test cases.</p>";
+  }
+  return html;
 }
 
 std::string errata_list(const TraceInputs& in, const std::string& id) {

@@ -6,8 +6,10 @@
 
 namespace gp::verification {
 
-SrsAudit run_srs_audit(const std::filesystem::path& root) {
+SrsAudit run_srs_audit(const std::filesystem::path& root,
+                       const std::optional<TestResults>& results) {
   SrsAudit audit{gather_trace_inputs(root), {}, {}};
+  audit.inputs.results = results;
   audit.result = analyse(audit.inputs);
   audit.stale =
       stale_traceability(render_traceability(audit.inputs, audit.result), root / "traceability");
@@ -45,11 +47,13 @@ std::string format_srs_audit(const SrsAudit& audit) {
                   std::to_string(c.input_constraints) + " input and " +
                   std::to_string(c.output_constraints) + " output constraints");
   int tested = 0;
-  for (const auto& m : c.models) tested += tests_of(in, m.id).empty() ? 0 : 1;
+  for (const auto& m : c.models) tested += passing_tests_of(in, m.id).empty() ? 0 : 1;
   text += row("functions", std::to_string(in.registrations.size()) + " registered for " +
                                std::to_string(c.models.size()) + " models");
   text += row("tests", std::to_string(in.tests.size()) + " test cases; " + std::to_string(tested) +
-                           "/" + std::to_string(c.models.size()) + " models tested");
+                           "/" + std::to_string(c.models.size()) +
+                           " models tested by a test that calls the function" +
+                           (in.results ? " and passes" : " (results not given)"));
   int written = 0, written_failed = 0, implemented = 0, implemented_failed = 0;
   std::string failed_ids;
   for (const auto& d : in.dimensions) {
@@ -61,11 +65,11 @@ std::string format_srs_audit(const SrsAudit& audit) {
       implemented_failed += d.consistent ? 0 : 1;
     }
   }
-  text += row("dimensional checks", std::to_string(written - written_failed) + " passed, " +
-                                        std::to_string(written_failed) + " failed as written (" +
-                                        failed_ids + "); " +
-                                        std::to_string(implemented - implemented_failed) + "/" +
-                                        std::to_string(implemented) + " corrected forms pass");
+  text += row("dimensional checks",
+              std::to_string(written - written_failed) + " passed, " +
+                  std::to_string(written_failed) + " failed as written (" + failed_ids + "); " +
+                  std::to_string(implemented - implemented_failed) + "/" +
+                  std::to_string(implemented) + " model functions consistent with units");
   std::map<std::string, int> kinds;
   for (const auto& e : in.errata) ++kinds[e.kind];
   std::string kind_text;

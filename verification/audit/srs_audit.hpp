@@ -3,6 +3,7 @@
 // errata and edges, with every failed check listed.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,9 @@ struct SrsAudit {
 };
 
 /// Runs the traceability checks on the tree at `root` and compares traceability/ with a fresh
-/// render.
-SrsAudit run_srs_audit(const std::filesystem::path& root);
+/// render. With the unit tests' `results`, a model counts as tested only by a test that passed.
+SrsAudit run_srs_audit(const std::filesystem::path& root,
+                       const std::optional<TestResults>& results = std::nullopt);
 
 /// The summary table, then one line per problem.
 std::string format_srs_audit(const SrsAudit& audit);

@@ -17,7 +17,7 @@ struct SymbolUnit {
 /// One equation checked for dimensional consistency.
 struct DimensionalCheck {
   std::string id;        ///< SRS id, e.g. "DD:linDisp"
-  std::string form;      ///< "as written" (the SRS's units) or "as implemented" (corrected)
+  std::string form;      ///< "as written" (the SRS's units) or "in the code" (the model function)
   std::string equation;  ///< the equation checked, in plain text
   std::vector<SymbolUnit> symbols;  ///< the unit of each symbol used
   std::string lhs_dimension;        ///< dimension of the left side, in SI base units
@@ -25,8 +25,8 @@ struct DimensionalCheck {
   bool consistent;
 };
 
-/// Every check: one "as written" per SRS model, plus an "as implemented" check for each model
-/// whose written form fails.
+/// Every check: one "as written" per SRS model, then one "in the code" per model function
+/// (code_dimensional_audit).
 std::vector<DimensionalCheck> dimensional_audit();
 
 }  // namespace gp::verification

@@ -12,7 +12,7 @@ std::map<std::string, std::vector<std::string>> called_models(
     const std::filesystem::path& root, const std::vector<models::Registration>& registrations) {
   std::map<std::string, std::string> id_of_function;
   for (const auto& r : registrations) id_of_function[r.function] = r.id;
-  const std::regex call(R"(\b(tm|gd|dd|im)::(\w+)\s*\()");
+  const std::regex call(R"(\b(tm|gd|dd|im)::(\w+)\s*(?:<[^;(){}]*>)?\s*\()");
   std::map<std::string, std::vector<std::string>> calls;
   for (const auto& r : registrations) {
     std::ifstream in(root / r.file);

@@ -106,7 +106,9 @@ void add_items(TraceFiles& files, const TraceInputs& in) {
   std::string md =
       "# SRS item -> function -> tests\n\nEach theoretical model, general definition, data "
       "definition and instance model, the C++ function that implements it (as its registration "
-      "declares) and the Catch2 test cases tagged with its id.\n\n"
+      "declares) and the Catch2 test cases tagged with its id whose body calls the function "
+      "(directly or "
+      "through the models that call it).\n\n"
       "|SRS id|label|function|file|tests|\n|:---|:---|:---|:---|:---|\n";
   std::string csv = "id,label,function,file,tests\n";
   for (const auto& model : in.catalog.models) {
@@ -151,9 +153,10 @@ void add_edges(TraceFiles& files, const TraceResult& result) {
 void add_dimensions(TraceFiles& files, const TraceInputs& in) {
   std::string md =
       "# Dimensional audit\n\nEach SRS equation with the units its symbols have in the SRS (as "
-      "written), and, where that fails, with the units this implementation gives them (as "
-      "implemented). Computed by the compiler with Boost.Units "
-      "(verification/dimensions/dimensional_audit.cpp); the radian is the SI unit 1.\n\n"
+      "written, verification/dimensions/dimensional_audit.cpp), then each model function of "
+      "models/ instantiated with Boost.Units quantities of the units its doc comment gives (in the "
+      "code, verification/dimensions/code_audit.cpp): a model function with a dimensional slip "
+      "does not compile. Vectors are (x, y); the radian is the SI unit 1.\n\n"
       "|SRS id|form|equation|units|left side|right side|result|\n"
       "|:---|:---|:---|:---|:---|:---|:---|\n";
   std::string csv = "id,form,equation,units,lhs,rhs,consistent\n";

@@ -4,10 +4,15 @@
 #include <set>
 
 #include "verification/traceability/code_edges.hpp"
+#include "verification/traceability/test_calls.hpp"
 
 namespace gp::verification {
 
 namespace {
+
+// Marks a test that exercises a model only through the engine or the oracle: it is listed with
+// the model but does not count as testing its function.
+constexpr std::string_view kVia = "via:";
 
 std::string join(const std::vector<std::string>& parts) {
   std::string text;
@@ -22,14 +27,43 @@ std::string explaining_erratum(const TraceInputs& inputs, const Edge& edge) {
   return "";
 }
 
+std::string function_of(const TraceInputs& in, const std::string& id) {
+  for (const auto& r : in.registrations) {
+    if (r.id == id) return r.function;
+  }
+  return "";
+}
+
+bool calls(const TraceInputs& in, const TestCase& test, const std::string& id) {
+  const auto found = in.test_calls.find(test.name);
+  return found != in.test_calls.end() && found->second.count(id) > 0;
+}
+
 void check_functions_and_tests(const TraceInputs& in, std::vector<std::string>& problems) {
   for (const auto& model : in.catalog.models) {
     const auto count = std::count_if(in.registrations.begin(), in.registrations.end(),
                                      [&](const auto& r) { return r.id == model.id; });
     if (count == 0) problems.push_back(model.id + ": no function registers this model");
     if (count > 1) problems.push_back(model.id + ": registered by more than one function");
-    if (tests_of(in, model.id).empty())
+    const std::string function = function_of(in, model.id);
+    if (tagged_tests(in, model.id).empty()) {
       problems.push_back(model.id + ": no test is tagged with it");
+    } else if (tests_of(in, model.id).empty()) {
+      problems.push_back(model.id + ": no test tagged with it calls " + function);
+    } else if (passing_tests_of(in, model.id).empty()) {
+      problems.push_back(model.id + ": no test that calls " + function + " passed");
+    }
+  }
+  // A test tagged with a model claims to test its function, unless it is about the SRS's text.
+  for (const auto& test : in.tests) {
+    if (std::find(test.tags.begin(), test.tags.end(), "srs") != test.tags.end()) continue;
+    for (const auto& tag : test.tags) {
+      const std::string function = function_of(in, tag);
+      if (!function.empty() && !calls(in, test, tag)) {
+        problems.push_back(test.file + ": test \"" + test.name + "\" is tagged " + tag +
+                           " but does not call " + function);
+      }
+    }
   }
   for (const auto& r : in.registrations) {
     if (!in.catalog.contains(r.id)) {
@@ -51,7 +85,8 @@ void check_functions_and_tests(const TraceInputs& in, std::vector<std::string>& 
                          "\" has '[', ']' or ';' in its name, which ctest cannot register");
     }
     for (const auto& tag : test.tags) {
-      if (tag.find(':') != std::string::npos && !in.catalog.contains(tag)) {
+      const std::string id = tag.starts_with(kVia) ? tag.substr(kVia.size()) : tag;
+      if (id.find(':') != std::string::npos && !in.catalog.contains(id)) {
         problems.push_back(test.file + ": test \"" + test.name + "\" is tagged " + tag +
                            ", which is not in the SRS");
       }
@@ -100,6 +135,14 @@ void check_errata(const TraceInputs& in, std::vector<std::string>& problems) {
       if (!test_names.count(name)) problems.push_back(e.id + ": no test is named \"" + name + "\"");
     }
   }
+  for (const auto& c : in.citations) {
+    const bool exists = std::any_of(in.errata.begin(), in.errata.end(),
+                                    [&](const Erratum& e) { return e.id == c.id; });
+    if (!exists) {
+      problems.push_back(c.file + ":" + std::to_string(c.line) + ": cites " + c.id +
+                         ", which srs/errata.md does not have");
+    }
+  }
 }
 
 void check_dimensions(const TraceInputs& in, std::vector<std::string>& problems) {
@@ -139,15 +182,37 @@ TraceInputs gather_trace_inputs(const std::filesystem::path& root) {
   in.registrations = models::registrations();
   in.calls = called_models(root, in.registrations);
   in.tests = index_tests(root, root / "tests");
+  for (const auto& t : in.tests) in.test_calls[t.name] = models_called(t.body, in.registrations);
   in.errata = load_errata(root / "srs" / "errata.md");
+  in.citations = erratum_citations(root);
   in.dimensions = dimensional_audit();
   return in;
 }
 
-std::vector<const TestCase*> tests_of(const TraceInputs& inputs, const std::string& id) {
+std::vector<const TestCase*> tagged_tests(const TraceInputs& inputs, const std::string& id) {
   std::vector<const TestCase*> found;
   for (const auto& t : inputs.tests) {
     if (std::find(t.tags.begin(), t.tags.end(), id) != t.tags.end()) found.push_back(&t);
+  }
+  return found;
+}
+
+std::vector<const TestCase*> tests_of(const TraceInputs& inputs, const std::string& id) {
+  auto found = tagged_tests(inputs, id);
+  std::erase_if(found, [&](const TestCase* t) { return !calls(inputs, *t, id); });
+  return found;
+}
+
+std::vector<const TestCase*> tests_through_engine(const TraceInputs& inputs,
+                                                  const std::string& id) {
+  return tagged_tests(inputs, std::string(kVia) + id);
+}
+
+std::vector<const TestCase*> passing_tests_of(const TraceInputs& inputs, const std::string& id) {
+  auto found = tests_of(inputs, id);
+  if (inputs.results) {
+    std::erase_if(found,
+                  [&](const TestCase* t) { return result_of(*inputs.results, t->name) != true; });
   }
   return found;
 }

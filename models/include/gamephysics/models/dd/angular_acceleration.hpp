@@ -1,5 +1,6 @@
 #pragma once
 #include "gamephysics/models/registry.hpp"
+#include "gamephysics/models/types.hpp"
 
 namespace gp::dd {
 
@@ -8,8 +9,9 @@ namespace gp::dd {
 /// @param mean_angular_acceleration  ᾱ, the mean angular acceleration over the step [rad/s²]
 /// @param step                       h [s]
 /// @return change of angular velocity Δω over the step [rad/s]
-inline double angular_velocity_change_from_acceleration(double mean_angular_acceleration,
-                                                        double step) {
+template <class AngularVelocity = double, class AngularAcceleration = double, class Time = double>
+inline AngularVelocity angular_velocity_change_from_acceleration(
+    models::In<AngularAcceleration> mean_angular_acceleration, models::In<Time> step) {
   return mean_angular_acceleration * step;
 }
 

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "gamephysics/models/registry.hpp"
+#include "gamephysics/models/types.hpp"
 
 namespace gp::dd {
 
@@ -13,14 +14,16 @@ namespace gp::dd {
 /// @param orientation           ϕ(t₀) [rad]
 /// @param angular_displacement  θ over [t₀, t] [rad]
 /// @return ϕ(t) in [0, 2π) [rad]
-inline double rotated_orientation(double orientation, double angular_displacement) {
+template <class Angle = double>
+inline Angle rotated_orientation(models::In<Angle> orientation,
+                                 models::In<Angle> angular_displacement) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
-  double phi = orientation + angular_displacement;
+  Angle phi = orientation + angular_displacement;
   if (phi >= 0.0 && phi < two_pi) return phi;  // the common case, without a division
   phi = std::fmod(phi, two_pi);
   if (phi < 0.0) phi += two_pi;
   // fmod of a tiny negative number plus 2π rounds to 2π itself, which is outside the range.
-  return phi >= two_pi ? 0.0 : phi;
+  return phi >= two_pi ? models::zero<Angle>() : phi;
 }
 
 GP_REGISTER_MODEL("DD:angDisp", dd, rotated_orientation);

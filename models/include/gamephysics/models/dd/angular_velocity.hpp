@@ -1,5 +1,6 @@
 #pragma once
 #include "gamephysics/models/registry.hpp"
+#include "gamephysics/models/types.hpp"
 
 namespace gp::dd {
 
@@ -8,7 +9,9 @@ namespace gp::dd {
 /// @param mean_angular_velocity  ω̄, the mean angular velocity over the step [rad/s]
 /// @param step                   h [s]
 /// @return angular displacement θ over the step [rad]
-inline double angular_displacement_from_velocity(double mean_angular_velocity, double step) {
+template <class Angle = double, class AngularVelocity = double, class Time = double>
+inline Angle angular_displacement_from_velocity(models::In<AngularVelocity> mean_angular_velocity,
+                                                models::In<Time> step) {
   return mean_angular_velocity * step;
 }
 

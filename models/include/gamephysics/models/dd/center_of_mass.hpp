@@ -12,9 +12,11 @@ namespace gp::dd {
 /// @param masses     m_j [kg], each > 0
 /// @param positions  p_j [m], as many as masses
 /// @return p_CM [m]
-inline Vec2 center_of_mass(std::span<const double> masses, std::span<const Vec2> positions) {
-  Vec2 weighted = Vec2::Zero();
-  double total_mass = 0.0;
+template <class Position = Vec2, class Mass = double>
+inline Position center_of_mass(models::In<std::span<const Mass>> masses,
+                               models::In<std::span<const Position>> positions) {
+  auto weighted = models::zero<models::Product<Mass, Position>>();
+  auto total_mass = models::zero<Mass>();
   for (std::size_t j = 0; j < masses.size(); ++j) {
     weighted += masses[j] * positions[j];
     total_mass += masses[j];

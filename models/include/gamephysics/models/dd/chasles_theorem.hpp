@@ -11,8 +11,10 @@ namespace gp::dd {
 /// @param angular_velocity  ω [rad/s]
 /// @param offset            u_OB, from O to B [m]
 /// @return v_B [m/s]
-inline Vec2 point_velocity(const Vec2& velocity_origin, double angular_velocity,
-                           const Vec2& offset) {
+template <class Velocity = Vec2, class AngularVelocity = double, class Offset = Vec2>
+inline Velocity point_velocity(models::In<Velocity> velocity_origin,
+                               models::In<AngularVelocity> angular_velocity,
+                               models::In<Offset> offset) {
   return velocity_origin + cross(angular_velocity, offset);
 }
 

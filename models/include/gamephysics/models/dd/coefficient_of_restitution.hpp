@@ -10,10 +10,11 @@ namespace gp::dd {
 /// @param initial_relative_velocity  v_i^AB before the collision [m/s], v_i^AB · n ≠ 0
 /// @param normal                     collision normal n [1]
 /// @return C_R [1]
-inline double coefficient_of_restitution(const Vec2& final_relative_velocity,
-                                         const Vec2& initial_relative_velocity,
-                                         const Vec2& normal) {
-  return -final_relative_velocity.dot(normal) / initial_relative_velocity.dot(normal);
+template <class Restitution = double, class Velocity = Vec2, class Normal = Vec2>
+inline Restitution coefficient_of_restitution(models::In<Velocity> final_relative_velocity,
+                                              models::In<Velocity> initial_relative_velocity,
+                                              models::In<Normal> normal) {
+  return -dot(final_relative_velocity, normal) / dot(initial_relative_velocity, normal);
 }
 
 GP_REGISTER_MODEL("DD:coeffRestitution", dd, coefficient_of_restitution);

@@ -9,7 +9,9 @@ namespace gp::dd {
 /// @param impulse       J [N·s]
 /// @param inverse_mass  1/m [1/kg]; 0 for an immovable body, which no impulse moves
 /// @return Δv [m/s]
-inline Vec2 velocity_change_from_impulse(const Vec2& impulse, double inverse_mass) {
+template <class Velocity = Vec2, class Impulse = Vec2, class InverseMass = double>
+inline Velocity velocity_change_from_impulse(models::In<Impulse> impulse,
+                                             models::In<InverseMass> inverse_mass) {
   return impulse * inverse_mass;
 }
 

@@ -12,9 +12,12 @@ namespace gp::dd {
 /// @param moment            I about the centre of mass [kg·m²]
 /// @param angular_velocity  ω [rad/s]
 /// @return KE [J]
-inline double kinetic_energy(double mass, const Vec2& velocity, double moment,
-                             double angular_velocity) {
-  return 0.5 * mass * velocity.squaredNorm() + 0.5 * moment * angular_velocity * angular_velocity;
+template <class Energy = double, class Mass = double, class Velocity = Vec2, class Moment = double,
+          class AngularVelocity = double>
+inline Energy kinetic_energy(models::In<Mass> mass, models::In<Velocity> velocity,
+                             models::In<Moment> moment,
+                             models::In<AngularVelocity> angular_velocity) {
+  return 0.5 * mass * squared_norm(velocity) + 0.5 * moment * angular_velocity * angular_velocity;
 }
 
 GP_REGISTER_MODEL("DD:kEnergy", dd, kinetic_energy);

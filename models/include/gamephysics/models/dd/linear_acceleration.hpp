@@ -9,7 +9,9 @@ namespace gp::dd {
 /// @param mean_acceleration  ā, the mean acceleration over the step [m/s²]
 /// @param step               h [s]
 /// @return change of velocity Δv over the step [m/s]
-inline Vec2 velocity_change_from_acceleration(const Vec2& mean_acceleration, double step) {
+template <class Velocity = Vec2, class Acceleration = Vec2, class Time = double>
+inline Velocity velocity_change_from_acceleration(models::In<Acceleration> mean_acceleration,
+                                                  models::In<Time> step) {
   return mean_acceleration * step;
 }
 

@@ -10,7 +10,9 @@ namespace gp::dd {
 /// @param position      p(t₀) [m]
 /// @param displacement  u over [t₀, t] [m]
 /// @return p(t) [m]
-inline Vec2 displaced_position(const Vec2& position, const Vec2& displacement) {
+template <class Position = Vec2>
+inline Position displaced_position(models::In<Position> position,
+                                   models::In<Position> displacement) {
   return position + displacement;
 }
 

@@ -11,7 +11,9 @@ namespace gp::dd {
 /// @param mean_velocity  v̄ [m/s]
 /// @param step           h [s]
 /// @return displacement u over the step [m]
-inline Vec2 displacement_from_velocity(const Vec2& mean_velocity, double step) {
+template <class Displacement = Vec2, class Velocity = Vec2, class Time = double>
+inline Displacement displacement_from_velocity(models::In<Velocity> mean_velocity,
+                                               models::In<Time> step) {
   return mean_velocity * step;
 }
 

@@ -15,11 +15,13 @@ namespace gp::dd {
 /// @param positions  p_j [m]
 /// @param axis       point where the rotation axis crosses the plane [m]
 /// @return I [kg·m²]
-inline double moment_of_inertia(std::span<const double> masses, std::span<const Vec2> positions,
-                                const Vec2& axis) {
-  double moment = 0.0;
+template <class Moment = double, class Mass = double, class Position = Vec2>
+inline Moment moment_of_inertia(models::In<std::span<const Mass>> masses,
+                                models::In<std::span<const Position>> positions,
+                                models::In<Position> axis) {
+  auto moment = models::zero<Moment>();
   for (std::size_t j = 0; j < masses.size(); ++j) {
-    moment += masses[j] * (positions[j] - axis).squaredNorm();
+    moment += masses[j] * squared_norm(positions[j] - axis);
   }
   return moment;
 }

@@ -12,8 +12,11 @@ namespace gp::dd {
 /// @param gravity   g [m/s²]
 /// @param position  p of the centre of mass [m]
 /// @return PE [J], zero at the origin
-inline double potential_energy(double mass, const Vec2& gravity, const Vec2& position) {
-  return -mass * gravity.dot(position);
+template <class Energy = double, class Mass = double, class Acceleration = Vec2,
+          class Position = Vec2>
+inline Energy potential_energy(models::In<Mass> mass, models::In<Acceleration> gravity,
+                               models::In<Position> position) {
+  return -mass * dot(gravity, position);
 }
 
 GP_REGISTER_MODEL("DD:potEnergy", dd, potential_energy);

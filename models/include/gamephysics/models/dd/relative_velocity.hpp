@@ -9,8 +9,9 @@ namespace gp::dd {
 /// @param velocity_a_at_contact  v^AP, velocity of the point P of body A (DD:chaslesThm) [m/s]
 /// @param velocity_b_at_contact  v^BP, velocity of the point P of body B [m/s]
 /// @return v_i^AB [m/s]
-inline Vec2 relative_velocity(const Vec2& velocity_a_at_contact,
-                              const Vec2& velocity_b_at_contact) {
+template <class Velocity = Vec2>
+inline Velocity relative_velocity(models::In<Velocity> velocity_a_at_contact,
+                                  models::In<Velocity> velocity_b_at_contact) {
   return velocity_a_at_contact - velocity_b_at_contact;
 }
 

@@ -10,7 +10,8 @@ namespace gp::dd {
 /// @param arm    r, from the point (the centre of mass) to where the force acts [m]
 /// @param force  F [N]
 /// @return τ [N·m], positive counter-clockwise (A:axesDefined)
-inline double torque(const Vec2& arm, const Vec2& force) {
+template <class Torque = double, class Arm = Vec2, class Force = Vec2>
+inline Torque torque(models::In<Arm> arm, models::In<Force> force) {
   return cross(arm, force);
 }
 

@@ -18,16 +18,22 @@ namespace gp::gd {
 /// @param arm_a              u_AP, from A's centre of mass to the contact point P [m]
 /// @param arm_b              u_BP, from B's centre of mass to the contact point P [m]
 /// @return impulse magnitude j [N·s]; positive when the bodies approach (v_i^AB · n < 0)
-inline double collision_impulse(double restitution, const Vec2& relative_velocity,
-                                const Vec2& normal, double inverse_mass_a, double inverse_mass_b,
-                                double inverse_moment_a, double inverse_moment_b, const Vec2& arm_a,
-                                const Vec2& arm_b) {
-  const double arm_a_cross_n = cross(arm_a, normal);
-  const double arm_b_cross_n = cross(arm_b, normal);
-  const double effective_inverse_mass = (inverse_mass_a + inverse_mass_b) * normal.squaredNorm() +
-                                        arm_a_cross_n * arm_a_cross_n * inverse_moment_a +
-                                        arm_b_cross_n * arm_b_cross_n * inverse_moment_b;
-  return -(1.0 + restitution) * relative_velocity.dot(normal) / effective_inverse_mass;
+template <class Impulse = double, class Restitution = double, class Velocity = Vec2,
+          class Normal = Vec2, class InverseMass = double, class InverseMoment = double,
+          class Arm = Vec2>
+inline Impulse collision_impulse(models::In<Restitution> restitution,
+                                 models::In<Velocity> relative_velocity, models::In<Normal> normal,
+                                 models::In<InverseMass> inverse_mass_a,
+                                 models::In<InverseMass> inverse_mass_b,
+                                 models::In<InverseMoment> inverse_moment_a,
+                                 models::In<InverseMoment> inverse_moment_b, models::In<Arm> arm_a,
+                                 models::In<Arm> arm_b) {
+  const auto arm_a_cross_n = cross(arm_a, normal);
+  const auto arm_b_cross_n = cross(arm_b, normal);
+  const auto effective_inverse_mass = (inverse_mass_a + inverse_mass_b) * squared_norm(normal) +
+                                      arm_a_cross_n * arm_a_cross_n * inverse_moment_a +
+                                      arm_b_cross_n * arm_b_cross_n * inverse_moment_b;
+  return -(1.0 + restitution) * dot(relative_velocity, normal) / effective_inverse_mass;
 }
 
 GP_REGISTER_MODEL("GD:impulse", gd, collision_impulse);

@@ -11,8 +11,10 @@ namespace gp::im {
 /// @param torque  τ_j(t), net torque about the centre of mass [N·m]
 /// @param moment  I about the centre of mass [kg·m²], I > 0
 /// @return α_j [rad/s²] (of either sign: srs/errata.md E-IM-ROTMOT-SIGN)
-inline double angular_acceleration(double torque, double moment) {
-  return tm::angular_acceleration_from_torque(torque, moment);
+template <class AngularAcceleration = double, class Torque = double, class Moment = double>
+inline AngularAcceleration angular_acceleration(models::In<Torque> torque,
+                                                models::In<Moment> moment) {
+  return tm::angular_acceleration_from_torque<AngularAcceleration, Torque, Moment>(torque, moment);
 }
 
 GP_REGISTER_MODEL("IM:rotMot", im, angular_acceleration, "TM:NewtonSecLawRotMot");

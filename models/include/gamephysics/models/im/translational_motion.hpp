@@ -14,8 +14,10 @@ namespace gp::im {
 /// @param force    F_j(t), sum of the other forces applied to the body [N]
 /// @param mass     m_j [kg], m_j > 0
 /// @return a_j [m/s²]
-inline Vec2 translational_acceleration(const Vec2& gravity, const Vec2& force, double mass) {
-  return gravity + tm::acceleration_from_force(force, mass);
+template <class Acceleration = Vec2, class Force = Vec2, class Mass = double>
+inline Acceleration translational_acceleration(models::In<Acceleration> gravity,
+                                               models::In<Force> force, models::In<Mass> mass) {
+  return gravity + tm::acceleration_from_force<Acceleration, Force, Mass>(force, mass);
 }
 
 GP_REGISTER_MODEL("IM:transMot", im, translational_acceleration, "TM:NewtonSecLawMot");

@@ -9,7 +9,8 @@ namespace gp::tm {
 /// @param force  net force F on the body [N]
 /// @param mass   mass m of the body [kg], m > 0
 /// @return acceleration a of the body [m/s²]
-inline Vec2 acceleration_from_force(const Vec2& force, double mass) {
+template <class Acceleration = Vec2, class Force = Vec2, class Mass = double>
+inline Acceleration acceleration_from_force(models::In<Force> force, models::In<Mass> mass) {
   return force / mass;
 }
 

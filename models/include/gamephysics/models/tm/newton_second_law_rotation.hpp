@@ -1,5 +1,6 @@
 #pragma once
 #include "gamephysics/models/registry.hpp"
+#include "gamephysics/models/types.hpp"
 
 namespace gp::tm {
 
@@ -10,7 +11,9 @@ namespace gp::tm {
 /// @param torque  net torque τ about the centre of mass [N·m]
 /// @param moment  moment of inertia I [kg·m²], I > 0
 /// @return angular acceleration α [rad/s²]
-inline double angular_acceleration_from_torque(double torque, double moment) {
+template <class AngularAcceleration = double, class Torque = double, class Moment = double>
+inline AngularAcceleration angular_acceleration_from_torque(models::In<Torque> torque,
+                                                            models::In<Moment> moment) {
   return torque / moment;
 }
 

@@ -8,7 +8,8 @@ namespace gp::tm {
 /// @param force  force F₁ that one body exerts on the other [N] (a force or, integrated over the
 ///               contact, an impulse [N·s]: the law holds for both)
 /// @return the reaction F₂ = −F₁ that the other body exerts back [same units]
-inline Vec2 reaction_force(const Vec2& force) {
+template <class Force = Vec2>
+inline Force reaction_force(models::In<Force> force) {
   return -force;
 }
 
