@@ -257,8 +257,8 @@ ContactGeometry contact_geometry(const Hull& a, const Pose& pa, const Hull& b, c
   }
   // The deepest pair is within the margin even where the clipped ends are not.
   if (contact.points.empty()) {
-    contact.points.push_back(
-        {feature_point(core.feature, hull_a, hull_b), contact.distance, core.feature});
+    contact.points.push_back({feature_point(core.feature, hull_a, hull_b),
+                              feature_gap(core.feature, hull_a, hull_b), core.feature});
   }
   return contact;
 }
