@@ -1,8 +1,8 @@
 #!/bin/sh
-# A user's clone has no ../shared beside it: copies the repository's files (git ls-files, else the
-# tree without build folders) to a new temporary folder, configures it, and runs the catalogue
-# test there, which must be reported skipped with its reason. Nothing is built: that test needs
-# only Python, and a full build would double the cost of ./test.sh's ctest stage.
+# A user's clone has no ../shared beside it: copies the repository's files (those git tracks or
+# would track, else the tree without build folders) to a new temporary folder, configures it, and
+# runs the catalogue test there, which must be reported skipped with its reason. Nothing is built:
+# that test needs only Python, and a full build would double the cost of ./test.sh's ctest stage.
 # Usage: fresh_copy_skips_catalogue.sh SOURCE_DIR
 set -eu
 src=$1
@@ -10,7 +10,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir "$tmp/repo"
 if git -C "$src" rev-parse --is-inside-work-tree > /dev/null 2>&1; then
-  (cd "$src" && git ls-files -z | xargs -0 cp --parents -t "$tmp/repo")
+  # The tracked files and the new ones not yet added (not the ignored), as they are on disk.
+  (cd "$src" && git ls-files -z --cached --others --exclude-standard |
+    xargs -0 sh -c 'for f; do [ -f "$f" ] && printf "%s\0" "$f"; done' sh |
+    xargs -0 cp --parents -t "$tmp/repo")
 else
   (cd "$src" && tar --exclude='./build*' --exclude=./out --exclude=node_modules -cf - .) |
     tar -C "$tmp/repo" -xf -
