@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <string>
 
-#include "engine/geometry/transform.hpp"
 #include "engine/input_error.hpp"
 #include "engine/setup/validation.hpp"
 #include "engine/space.hpp"
@@ -12,22 +11,6 @@
 #include "gamephysics/models/dd/torque.hpp"
 
 namespace gp {
-
-namespace {
-
-std::string type_name(BodyType type) {
-  switch (type) {
-    case BodyType::Dynamic:
-      return "dynamic";
-    case BodyType::Static:
-      return "static";
-    case BodyType::Kinematic:
-      return "kinematic";
-  }
-  return "unknown";
-}
-
-}  // namespace
 
 std::string Space::field_of(BodyId body) const {
   const std::string field = "bodies[" + std::to_string(body) + "]";
@@ -42,7 +25,8 @@ std::string Space::field_of(BodyId body) const {
 std::string Space::dynamic_field_of(BodyId body, const std::string& what) const {
   const std::string field = field_of(body);
   if (types_[body] != BodyType::Dynamic) {
-    throw InputError(field + ".type", "must be dynamic to " + what, type_name(types_[body]));
+    throw InputError(field + ".type", "must be dynamic to " + what,
+                     types_[body] == BodyType::Static ? "static" : "kinematic");
   }
   return field;
 }

@@ -86,7 +86,7 @@ TEST_CASE("A set position and velocity, then free flight, follow the parabola",
   CHECK_THAT(space.state(id).velocity.y(), WithinAbs(4.0 - g * t, 1e-12));
 }
 
-TEST_CASE("A set angle and angular velocity turn a free body as ϕ = ϕ₀ + ωt, in [0, 2π)",
+TEST_CASE("A set angle and angular velocity turn a free body as ϕ = ϕ₀ + ωt, mod 2π",
           "[FR:Calculate-Rotation-Over-Time][DD:angDisp]") {
   gp::Space space;
   const auto id = space.add_body(disc("wheel", {0.0, 0.0}));
