@@ -134,6 +134,27 @@ BodyId id_of(const Space& space, const BodyRef& body) {
   throw InputError("body", "must name a body of the space", '"' + name + '"');
 }
 
+/// A query of Space about a body, taking the body by id or by name.
+template <typename Result>
+auto of_body(Result (Space::*query)(BodyId) const) {
+  return [query](const Space& s, const BodyRef& body) { return (s.*query)(id_of(s, body)); };
+}
+
+/// A change of a body's state, taking the body by id or by name.
+template <typename Value>
+auto by_body(void (Space::*change)(BodyId, Value)) {
+  return
+      [change](Space& s, const BodyRef& body, Value value) { (s.*change)(id_of(s, body), value); };
+}
+
+/// An impulse or a force at a point, which defaults to the body's centre of mass.
+auto at_point(void (Space::*push)(BodyId, const Vec2&, const Vec2&)) {
+  return [push](Space& s, const BodyRef& body, const Vec2& vector, std::optional<Vec2> point) {
+    const BodyId id = id_of(s, body);
+    (s.*push)(id, vector, point.value_or(s.state(id).position));
+  };
+}
+
 void bind_space_class(py::module_& m) {
   py::class_<Wrench>(m, "Wrench", "A force [N] and a torque [N·m] about the centre of mass.")
       .def(py::init([](const Vec2& force, double torque) {
@@ -153,51 +174,28 @@ void bind_space_class(py::module_& m) {
       .def("name", [](const Space& s, BodyId id) { return std::string(s.name(id)); })
       .def("find_body", &Space::find_body, py::arg("name"),
            "The id of the body named `name` (not removed), or None.")
-      .def(
-          "state", [](const Space& s, const BodyRef& body) { return s.state(id_of(s, body)); },
-          py::arg("body"), "Centre of mass, orientation in [0, 2π), velocities.")
-      .def(
-          "mass", [](const Space& s, const BodyRef& body) { return s.mass(id_of(s, body)); },
-          py::arg("body"), "kg; inf for static and kinematic bodies")
-      .def(
-          "moment", [](const Space& s, const BodyRef& body) { return s.moment(id_of(s, body)); },
-          py::arg("body"), "kg·m² about the centre of mass; inf if it cannot rotate")
-      .def(
-          "set_position",
-          [](Space& s, const BodyRef& body, const Vec2& p) { s.set_position(id_of(s, body), p); },
-          py::arg("body"), py::arg("position"), "Moves the centre of mass to `position` [m].")
-      .def(
-          "set_angle",
-          [](Space& s, const BodyRef& body, double angle) { s.set_angle(id_of(s, body), angle); },
-          py::arg("body"), py::arg("angle"), "Turns the body to ϕ [rad] about its centre of mass.")
-      .def(
-          "set_velocity",
-          [](Space& s, const BodyRef& body, const Vec2& v) { s.set_velocity(id_of(s, body), v); },
-          py::arg("body"), py::arg("velocity"), "Velocity of the centre of mass [m/s].")
-      .def(
-          "set_angular_velocity",
-          [](Space& s, const BodyRef& body, double w) {
-            s.set_angular_velocity(id_of(s, body), w);
-          },
-          py::arg("body"), py::arg("angular_velocity"), "ω [rad/s].")
-      .def(
-          "apply_impulse",
-          [](Space& s, const BodyRef& body, const Vec2& impulse, std::optional<Vec2> point) {
-            const BodyId id = id_of(s, body);
-            s.apply_impulse(id, impulse, point.value_or(s.state(id).position));
-          },
-          py::arg("body"), py::arg("impulse"), py::arg("point") = std::nullopt,
-          "Impulse J [N·s] at world point p [m] (default: the centre of mass): v changes by J/m "
-          "(DD:impulseV), ω by (r × J)/I (DD:torque).")
-      .def(
-          "apply_force",
-          [](Space& s, const BodyRef& body, const Vec2& force, std::optional<Vec2> point) {
-            const BodyId id = id_of(s, body);
-            s.apply_force(id, force, point.value_or(s.state(id).position));
-          },
-          py::arg("body"), py::arg("force"), py::arg("point") = std::nullopt,
-          "Force F [N] at world point p [m] (default: the centre of mass) during the next step "
-          "only, with torque r × F (DD:torque).")
+      .def("state", of_body(&Space::state), py::arg("body"),
+           "Centre of mass, orientation in [0, 2π), velocities.")
+      .def("mass", of_body(&Space::mass), py::arg("body"),
+           "kg; inf for static and kinematic bodies")
+      .def("moment", of_body(&Space::moment), py::arg("body"),
+           "kg·m² about the centre of mass; inf if it cannot rotate")
+      .def("set_position", by_body(&Space::set_position), py::arg("body"), py::arg("position"),
+           "Moves the centre of mass to `position` [m].")
+      .def("set_angle", by_body(&Space::set_angle), py::arg("body"), py::arg("angle"),
+           "Turns the body to ϕ [rad] about its centre of mass.")
+      .def("set_velocity", by_body(&Space::set_velocity), py::arg("body"), py::arg("velocity"),
+           "Velocity of the centre of mass [m/s].")
+      .def("set_angular_velocity", by_body(&Space::set_angular_velocity), py::arg("body"),
+           py::arg("angular_velocity"), "ω [rad/s].")
+      .def("apply_impulse", at_point(&Space::apply_impulse), py::arg("body"), py::arg("impulse"),
+           py::arg("point") = std::nullopt,
+           "Impulse J [N·s] at world point p [m] (default: the centre of mass): v changes by J/m "
+           "(DD:impulseV), ω by (r × J)/I (DD:torque).")
+      .def("apply_force", at_point(&Space::apply_force), py::arg("body"), py::arg("force"),
+           py::arg("point") = std::nullopt,
+           "Force F [N] at world point p [m] (default: the centre of mass) during the next step "
+           "only, with torque r × F (DD:torque).")
       .def(
           "remove_body", [](Space& s, const BodyRef& body) { s.remove_body(id_of(s, body)); },
           py::arg("body"), "Removes the body: it no longer moves or collides; ids stay.")
