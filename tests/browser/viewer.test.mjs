@@ -199,3 +199,27 @@ test("the viewer says when the output is too sparse to play smoothly, and its lo
     await close();
   }
 });
+
+test("with --audit, the inspector's SRS ids link to their entries on the audit page", async () => {
+  const dir = path.join(out, "browser_linked");
+  gamephysics("audit", "--root", root, "--out", dir);
+  const html = path.join(dir, "ball.html");
+  gamephysics("view", scene, "--out", html, "--audit", "audit.html");
+  const { page, errors, close } = await openPage(html, "#t=1.5&body=ball");
+  try {
+    await page.waitForFunction(() => window.gp !== undefined);
+    const links = await page.$$eval("#body-table td.id a", (as) => as.map((a) => a.getAttribute("href")));
+    assert.ok(links.includes("audit.html#DD%3AkEnergy"), `links: ${links}`);
+    // Followed, each lands on the audit page's section of that id.
+    await page.click('#body-table td.id a[href="audit.html#DD%3AkEnergy"]');
+    await page.waitForURL(/audit\.html#DD%3AkEnergy$/);
+    assert.equal(await page.locator('[id="DD:kEnergy"].srs-item').count(), 1);
+    for (const href of new Set(links)) {
+      const id = decodeURIComponent(href.split("#")[1]);
+      assert.equal(await page.locator(`[id="${id}"]`).count(), 1, `${id} has an entry`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

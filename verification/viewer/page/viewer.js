@@ -348,7 +348,13 @@
     for (const [label, id, value, unit] of rows) {
       const tr = table.insertRow();
       tr.insertCell().textContent = label;
-      const cell = tr.insertCell(); cell.textContent = id; cell.className = "id";
+      const cell = tr.insertCell(); cell.className = "id";
+      if (id && data.audit) {  // the entry of the SRS id on the audit page
+        const link = cell.appendChild(document.createElement("a"));
+        link.href = `${data.audit}#${encodeURIComponent(id)}`; link.textContent = id;
+      } else {
+        cell.textContent = id;
+      }
       const v = tr.insertCell(); v.textContent = value; v.className = "value";
       tr.insertCell().textContent = unit;
     }
