@@ -149,6 +149,26 @@ TEST_CASE("Forces applied before one step add up, to a body with forces of its o
   CHECK_THAT(space.state(id).velocity.y(), WithinAbs((15.0 - g) * 1.0, 1e-14));
 }
 
+TEST_CASE("What is added between a force for one step and the step outlasts the step",
+          "[IM:transMot]") {
+  gp::Space space;
+  const auto a = space.add_body(disc("a", {0.0, 0.0}));
+  space.apply_force(a, {2.0, 0.0}, {0.0, 0.0});
+  // Added, and given a callback, while a's force for one step is pending.
+  auto def = disc("b", {5.0, 0.0});
+  def.force = {0.0, 4.0};  // N, constant: 2 m/s² on 2 kg
+  const auto b = space.add_body(def);
+  space.set_force_callback(a, [](double, gp::BodyId, const gp::BodyState&) {
+    return gp::Wrench{{0.0, -2.0}, 0.0};  // N: −1 m/s²
+  });
+  space.step(0.5);
+  space.step(0.5);
+  // a: 1 m/s² along x for the first 0.5 s only; −1 m/s² along y throughout. b: 2 m/s² along y.
+  CHECK_THAT(space.state(a).velocity.x(), WithinAbs(0.5, 1e-14));
+  CHECK_THAT(space.state(a).velocity.y(), WithinAbs(-1.0, 1e-14));
+  CHECK_THAT(space.state(b).velocity.y(), WithinAbs(2.0, 1e-14));
+}
+
 TEST_CASE("A removed body no longer collides: what rested on it falls freely",
           "[FR:Determine-Collisions]") {
   gp::Space space(falling());

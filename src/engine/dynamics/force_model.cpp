@@ -22,11 +22,12 @@ bool ForceModel::beyond_gravity(const BodyForces& forces) {
          forces.callback;
 }
 
-ForceModel::Pushed ForceModel::pushed_by(BodyId body, const Applied& applied) const {
+ForceModel::Pushed ForceModel::pushed_by(BodyId body, const Applied& applied,
+                                         bool with_next_step) const {
   // As evaluate() has them when the forces are constant.
   const BodyForces& f = applied.forces;
-  const Vec2 force = before_next_step_ ? Vec2(f.force + applied.next_step.force) : f.force;
-  const double torque = before_next_step_ ? f.torque + applied.next_step.torque : f.torque;
+  const Vec2 force = with_next_step ? Vec2(f.force + applied.next_step.force) : f.force;
+  const double torque = with_next_step ? f.torque + applied.next_step.torque : f.torque;
   return {body, im::translational_acceleration(gravity_, force, f.mass),
           rotates_[applied.entry] ? im::angular_acceleration(torque, 1.0 / f.inverse_moment) : 0.0};
 }
@@ -37,17 +38,29 @@ void ForceModel::add(BodyId id, BodyForces forces) {
   append(masses_, forces.mass);
   append(rotates_, forces.inverse_moment > 0.0);
   if (!beyond_gravity(forces)) return;
-  applied_.push_back({entry, std::move(forces)});
-  pushed_.push_back(pushed_by(id, applied_.back()));
+  const Applied applied{entry, std::move(forces)};
+  const Pushed pushed = pushed_by(id, applied, false);
+  // The largest id so far: appended, the entries stay in order.
+  in_each([&](std::vector<Applied>& a, std::vector<Pushed>& p) {
+    a.push_back(applied);
+    p.push_back(pushed);
+  });
 }
 
-std::vector<ForceModel::Applied>::iterator ForceModel::applied_at(std::uint32_t entry,
-                                                                  double inverse_moment) {
-  auto at = std::lower_bound(applied_.begin(), applied_.end(), entry,
+template <typename Change>
+void ForceModel::in_each(Change change) {
+  change(applied_, pushed_);
+  if (before_next_step_) change(before_next_step_->applied, before_next_step_->pushed);
+}
+
+std::vector<ForceModel::Applied>::iterator ForceModel::applied_at(std::vector<Applied>& applied,
+                                                                  std::uint32_t entry,
+                                                                  double inverse_moment) const {
+  auto at = std::lower_bound(applied.begin(), applied.end(), entry,
                              [](const Applied& a, std::uint32_t e) { return a.entry < e; });
-  if (at == applied_.end() || at->entry != entry) {
+  if (at == applied.end() || at->entry != entry) {
     // A body of gravity only so far: its constant forces are none.
-    at = applied_.insert(
+    at = applied.insert(
         at,
         {entry, {masses_[entry], inverse_moment, Vec2::Zero(), 0.0, false, Vec2::Zero(), nullptr}});
   }
@@ -57,18 +70,21 @@ std::vector<ForceModel::Applied>::iterator ForceModel::applied_at(std::uint32_t 
 void ForceModel::set_callback(BodyId id, double inverse_moment, ForceCallback callback) {
   const auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
   if (it == ids_.end() || *it != id) return;
-  applied_at(static_cast<std::uint32_t>(it - ids_.begin()), inverse_moment)->forces.callback =
-      std::move(callback);
+  const auto entry = static_cast<std::uint32_t>(it - ids_.begin());
+  in_each([&](std::vector<Applied>& applied, std::vector<Pushed>&) {
+    applied_at(applied, entry, inverse_moment)->forces.callback = callback;
+  });
 }
 
 void ForceModel::add_for_next_step(BodyId id, double inverse_moment, const Wrench& wrench) {
   const auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
   if (it == ids_.end() || *it != id) return;
   if (!before_next_step_) before_next_step_ = Saved{applied_, pushed_};
-  const auto at = applied_at(static_cast<std::uint32_t>(it - ids_.begin()), inverse_moment);
+  const auto at =
+      applied_at(applied_, static_cast<std::uint32_t>(it - ids_.begin()), inverse_moment);
   at->next_step.force += wrench.force;
   at->next_step.torque += wrench.torque;
-  const Pushed now = pushed_by(id, *at);
+  const Pushed now = pushed_by(id, *at, true);
   const auto p = std::lower_bound(pushed_.begin(), pushed_.end(), id,
                                   [](const Pushed& q, BodyId b) { return q.body < b; });
   if (p != pushed_.end() && p->body == id) {
@@ -92,14 +108,12 @@ void ForceModel::remove(BodyId id) {
   ids_.erase(it);
   masses_.erase(masses_.begin() + entry);
   rotates_.erase(rotates_.begin() + entry);
-  // The entries after the body's move down by one, in the saved forces too.
-  const auto drop = [entry, id](std::vector<Applied>& applied, std::vector<Pushed>& pushed) {
+  // The entries after the body's move down by one.
+  in_each([entry, id](std::vector<Applied>& applied, std::vector<Pushed>& pushed) {
     std::erase_if(applied, [entry](const Applied& a) { return a.entry == entry; });
     for (Applied& a : applied) a.entry -= a.entry > entry ? 1 : 0;
     std::erase_if(pushed, [id](const Pushed& p) { return p.body == id; });
-  };
-  drop(applied_, pushed_);
-  if (before_next_step_) drop(before_next_step_->applied, before_next_step_->pushed);
+  });
 }
 
 bool ForceModel::constant() const {

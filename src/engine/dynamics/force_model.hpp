@@ -107,11 +107,16 @@ class ForceModel {
   };
   /// Whether `forces` push the body beyond gravity, so that it needs an Applied.
   static bool beyond_gravity(const BodyForces& forces);
-  /// The constant accelerations of `body` under `applied`.
-  Pushed pushed_by(BodyId body, const Applied& applied) const;
-  /// The Applied of entry `entry` of bodies(), made for a body of gravity only so far, whose
-  /// inverse moment is `inverse_moment`.
-  std::vector<Applied>::iterator applied_at(std::uint32_t entry, double inverse_moment);
+  /// The constant accelerations of `body` under `applied`, with its forces for the next step.
+  Pushed pushed_by(BodyId body, const Applied& applied, bool with_next_step) const;
+  /// The Applied of entry `entry` of bodies() in `applied`, made for a body of gravity only so
+  /// far, whose inverse moment is `inverse_moment`.
+  std::vector<Applied>::iterator applied_at(std::vector<Applied>& applied, std::uint32_t entry,
+                                            double inverse_moment) const;
+  /// Calls change(applied, pushed) on applied_ and pushed_, and on the ones end_step() will
+  /// restore, so that a change made between add_for_next_step and the step outlasts the step.
+  template <typename Change>
+  void in_each(Change change);
   /// The Pushed of `body`, null for a body of gravity only.
   const Pushed* pushed(BodyId body) const {
     if (pushed_.empty()) return nullptr;  // the common case: gravity alone
