@@ -6,11 +6,8 @@ that against the run and draws the three heights over time.
 
     PYTHONPATH=build/python python3 examples/python/bounce_restitution.py [--out bounce.png]
 """
-import argparse
-
-import matplotlib
-
 import gamephysics as gp
+from _figure import close_figure, open_figure
 
 G = 9.81  # m/s²
 DROP = 10.0  # m, the centre's height at t = 0
@@ -34,15 +31,8 @@ def heights(restitution, duration=6.0, dt=1 / 240):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", help="write the figure to this file instead of showing it")
-    args = parser.parse_args()
-    if args.out:
-        matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    args, figure, axes = open_figure(__doc__)
     t_impact = (2 * (DROP - RADIUS) / G) ** 0.5
-    figure, axes = plt.subplots(figsize=(8, 4.5))
     for restitution in (0.5, 0.8, 1.0):
         t, y = heights(restitution)
         apex = max(yk for tk, yk in zip(t, y) if t_impact < tk < 2.5 * t_impact)
@@ -53,14 +43,8 @@ def main():
         assert abs(apex - expected) < 1e-4, (apex, expected)
         axes.plot(t, y, label=f"C_R = {restitution}")
     axes.axhline(RADIUS, color="grey", linewidth=0.8)
-    axes.set_xlabel("t [s]")
-    axes.set_ylabel("height of the centre y [m]")
-    axes.set_title("A ball dropped from 10 m bounces back to 0.5 + C_R² · 9.5 m")
-    axes.legend()
-    if args.out:
-        figure.savefig(args.out, dpi=100)
-    else:
-        plt.show()
+    close_figure(args, figure, axes, "t [s]", "height of the centre y [m]",
+                 "A ball dropped from 10 m bounces back to 0.5 + C_R² · 9.5 m")
 
 
 if __name__ == "__main__":

@@ -9,13 +9,12 @@ symplectic Euler (first order; 3.3e-6 measured), 1e-11 for velocity Verlet (seco
 
     PYTHONPATH=build/python python3 examples/python/orbit_energy.py [--out orbit.png]
 """
-import argparse
 import pathlib
 
-import matplotlib
 import numpy as np
 
 import gamephysics as gp
+from _figure import close_figure, open_figure
 from gamephysics.models import dd
 
 SCENE = pathlib.Path(__file__).resolve().parents[2] / "scenes" / "orbit.json"
@@ -33,15 +32,8 @@ def energy(scene, run):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", help="write the figure to this file instead of showing it")
-    args = parser.parse_args()
-    if args.out:
-        matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    args, figure, axes = open_figure(__doc__)
     scene = gp.load_scene(str(SCENE))
-    figure, axes = plt.subplots(figsize=(8, 4.5))
     drift = {}
     for integrator in INTEGRATORS:
         run = gp.simulate(scene, integrator=integrator)
@@ -55,14 +47,8 @@ def main():
     assert drift["symplectic_euler"] < 1e-5, drift
     assert drift["velocity_verlet"] < 1e-11, drift
     assert drift["rk4"] < 1e-13, drift
-    axes.set_xlabel("t [s]")
-    axes.set_ylabel("|E(t) − E(0)| / |E(0)|")
-    axes.set_title("Two-body orbit, dt = 1 ms: energy drift by integrator")
-    axes.legend()
-    if args.out:
-        figure.savefig(args.out, dpi=100)
-    else:
-        plt.show()
+    close_figure(args, figure, axes, "t [s]", "|E(t) − E(0)| / |E(0)|",
+                 "Two-body orbit, dt = 1 ms: energy drift by integrator")
 
 
 if __name__ == "__main__":

@@ -7,12 +7,10 @@ there. The script checks the run against that closed form and draws both.
 
     PYTHONPATH=build/python python3 examples/python/push.py [--out push.png]
 """
-import argparse
-
-import matplotlib
 import numpy as np
 
 import gamephysics as gp
+from _figure import close_figure, open_figure
 
 G = 9.81  # m/s²
 MASS = 2.0  # kg
@@ -32,13 +30,7 @@ def closed_form(t):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", help="write the figure to this file instead of showing it")
-    args = parser.parse_args()
-    if args.out:
-        matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    args, figure, axes = open_figure(__doc__)
     space = gp.Space(gp.Settings(gravity=(0.0, -G)))
     ball = space.add_body(gp.BodyDef("ball", mass=MASS,
                                      shapes=[gp.ShapeDef(gp.Shape.circle(0.2))]))
@@ -56,20 +48,12 @@ def main():
     # Velocity Verlet is exact under constant acceleration: rounding only, which 200 steps of
     # positions of about 10 m bring to a few 1e-14 m (2.7e-14 measured).
     assert error < 1e-13, error
-    figure, axes = plt.subplots(figsize=(8, 4.5))
     axes.plot(exact[:, 0], exact[:, 1], color="grey", linewidth=4, alpha=0.4,
               label="closed form")
     axes.plot(path[:, 0], path[:, 1], label="gamephysics")
     axes.plot(*path[99], "o", color="red", label="impulse J = (4, 6) N·s")
-    axes.set_xlabel("x [m]")
-    axes.set_ylabel("y [m]")
     axes.set_aspect("equal")
-    axes.set_title("A push in flight: Δv = J/m, then a new parabola")
-    axes.legend()
-    if args.out:
-        figure.savefig(args.out, dpi=100)
-    else:
-        plt.show()
+    close_figure(args, figure, axes, "x [m]", "y [m]", "A push in flight: Δv = J/m, then a new parabola")
 
 
 if __name__ == "__main__":
