@@ -53,7 +53,8 @@ def main():
     axes.plot(path[:, 0], path[:, 1], label="gamephysics")
     axes.plot(*path[99], "o", color="red", label="impulse J = (4, 6) N·s")
     axes.set_aspect("equal")
-    close_figure(args, figure, axes, "x [m]", "y [m]", "A push in flight: Δv = J/m, then a new parabola")
+    close_figure(args, figure, axes, "x [m]", "y [m]",
+                 "A push in flight: Δv = J/m, then a new parabola")
 
 
 if __name__ == "__main__":
