@@ -13,7 +13,7 @@ Usage (from the repository root)::
     python3 srs/extract_catalog.py ../shared/srs/GamePhysics_SRS.md --out srs/catalog.json
 
 Without a positional argument the SRS is looked up at
-``<repo root>/../shared/srs/GamePhysics_SRS.md``; without ``--out`` the JSON is
+``<repo root>/srs/GamePhysics_SRS.md``, then ``<repo root>/../shared/srs/GamePhysics_SRS.md``; without ``--out`` the JSON is
 printed to stdout.  The output is deterministic (``indent=2``,
 ``ensure_ascii=False``, fixed key order, trailing newline).
 
@@ -49,7 +49,11 @@ import sys
 SCRIPT_DIR = os.path.dirname(os.path.abspath(__file__))
 REPO_ROOT = os.path.dirname(SCRIPT_DIR)
 WORKSPACE_ROOT = os.path.dirname(REPO_ROOT)
-DEFAULT_SRS = os.path.join(WORKSPACE_ROOT, "shared", "srs", "GamePhysics_SRS.md")
+# Where a user puts the SRS (it is not in the repository), else beside the repository.
+DEFAULT_SRS = next((p for p in (os.path.join(REPO_ROOT, "srs", "GamePhysics_SRS.md"),
+                                os.path.join(WORKSPACE_ROOT, "shared", "srs", "GamePhysics_SRS.md"))
+                    if os.path.exists(p)),
+                   os.path.join(WORKSPACE_ROOT, "shared", "srs", "GamePhysics_SRS.md"))
 LICENCE_NAME = "LICENSE-Drasil"
 
 EXPECTED_COUNTS = {

@@ -14,6 +14,8 @@ packages=(
   libboost-dev         # Boost.Units for the dimensional audit
   libchipmunk-dev libbox2d-dev libbenchmark-dev  # peer engines and benchmarks (verification/)
   python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
+  pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
+  python3-nbconvert python3-ipykernel  # the notebook test (docs/notebooks/)
   nodejs               # npm: KaTeX for the audit page, playwright-core (tools/install-web.sh)
   chromium             # headless browser of the browser tests (tests/browser/)
   clang libclang-rt-14-dev  # the libFuzzer target of ./test.sh (verification/fuzz)

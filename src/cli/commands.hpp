@@ -78,6 +78,9 @@ struct ViewOptions {
   std::filesystem::path out;  ///< the HTML page to write
   SceneOverrides overrides;
   bool oracle = false;  ///< overlay the SUNDIALS oracle's solution
+  /// The audit page (`gamephysics audit`), as the page links to it: each SRS id then links to
+  /// its entry there. Empty: no links.
+  std::string audit;
 };
 
 /// `gamephysics view`: runs a scene file as `simulate` does and writes one self-contained HTML

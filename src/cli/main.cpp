@@ -91,6 +91,9 @@ int main(int argc, char** argv) {
   view->add_option("--output-dt", view_run.overrides.output_dt,
                    "Interval between frames [s] (overrides the file)");
   view->add_flag("--oracle", view_run.oracle, "Overlay the SUNDIALS oracle's solution");
+  view->add_option("--audit", view_run.audit,
+                   "The audit page as the page links to it (e.g. audit.html beside it): each SRS "
+                   "id links to its entry there");
 
   std::string audit_out = "out/report";
   auto* audit = app.add_subcommand("audit", "The SRS audit alone, and its page OUT/audit.html");

@@ -62,7 +62,8 @@ int view(const ViewOptions& options) {
         *space,
         recording,
         oracle ? &*oracle : nullptr,
-        std::string(verification::oracle_method_name(oracle_settings.method))};
+        std::string(verification::oracle_method_name(oracle_settings.method)),
+        options.audit};
     verification::write_viewer_page(out->stream(), run);
     out->commit();
     std::cout << "wrote " << options.out.string() << ": " << space->body_count() << " bodies, "

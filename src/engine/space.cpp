@@ -47,6 +47,7 @@ BodyId Space::add_body(const BodyDef& def) {
   names_.add(def.name);
   append(types_, def.type);
   append(dynamic_, dynamic);
+  append(removed_, char{0});
   append(inertia_.inverse_mass, dynamic ? 1.0 / mass.mass : 0.0);
   append(inertia_.inverse_moment, rotates ? 1.0 / mass.moment : 0.0);
   const Transform frame(def.position, def.angle);
@@ -105,6 +106,7 @@ void Space::step(double dt) {
     // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
     while (remaining > 0.0) remaining -= substep(remaining);
   }
+  forces_.end_step();
   for (BodyId j : forces_.bodies()) {
     if (!state_.position[j].allFinite() || !state_.velocity[j].allFinite() ||
         !std::isfinite(state_.angle[j]) || !std::isfinite(state_.angular_velocity[j])) {

@@ -4,6 +4,7 @@
 // FR:Determine-Collision-Response-Over-Time).
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,6 +44,34 @@ class Space {
 
   /// Advances the space by dt [s] > 0. Throws NumericalError if a state becomes non-finite.
   void step(double dt);
+
+  // Changes between steps (space_edits.cpp). Each checks its input as add_body does: it throws
+  // InputError naming "bodies[i].field", the rule and the value, having changed nothing, for a
+  // body that is not in the space or a value that breaks a constraint.
+
+  /// Moves the centre of mass of `body` (the position that state() reports) to `position` [m].
+  void set_position(BodyId body, const Vec2& position);
+  /// Turns `body` about its centre of mass to orientation ϕ = `angle` [rad].
+  void set_angle(BodyId body, double angle);
+  /// The velocity of the centre of mass [m/s]; not of a static body.
+  void set_velocity(BodyId body, const Vec2& velocity);
+  /// ω [rad/s]; not of a static body, nor, unless 0, of a dynamic body without a moment of
+  /// inertia (a point mass given none).
+  void set_angular_velocity(BodyId body, double angular_velocity);
+  /// Applies impulse J [N·s] at world point p [m] to dynamic body `body`: its velocity changes by
+  /// J/m (DD:impulseV) and its ω by (r × J)/I, r from its centre of mass to p (DD:torque).
+  void apply_impulse(BodyId body, const Vec2& impulse, const Vec2& point);
+  /// Applies force F [N] at world point p [m] to dynamic body `body` during the next step() only:
+  /// F at the centre of mass and the torque r × F (DD:torque), r from the centre of mass as it
+  /// is now, both constant over that step (as Box2D's ApplyForce and Pymunk's
+  /// apply_force_at_world_point). Forces applied before one step add up.
+  void apply_force(BodyId body, const Vec2& force, const Vec2& point);
+  /// Removes `body`: it no longer moves, collides, pulls or is reported by find_body. Its contacts
+  /// and their warm starts go with it; ids are not reused, and the other bodies keep theirs.
+  void remove_body(BodyId body);
+  bool removed(BodyId body) const { return removed_[body] != 0; }
+  /// The body named `name` that is not removed (the first added, if several), or nothing; O(N).
+  std::optional<BodyId> find_body(std::string_view name) const;
 
   double time() const { return time_; }
   std::size_t body_count() const { return names_.size(); }
@@ -90,12 +119,17 @@ class Space {
   /// their impulses for warm starting.
   void advance(double h);
   void move_kinematic(double h);
+  /// "bodies[i]" for a body of the space that is not removed; else throws InputError.
+  std::string field_of(BodyId body) const;
+  /// field_of(body), and throws InputError unless `body` is dynamic: `what` is done to it.
+  std::string dynamic_field_of(BodyId body, const std::string& what) const;
 
   Settings settings_;
   double time_ = 0.0;
   BodyNames names_;
   std::vector<BodyType> types_;
   std::vector<char> dynamic_;
+  std::vector<char> removed_;
   std::vector<BodyId> kinematic_;
   bool collides_ = false;  // two shapes of different bodies, one of them dynamic
   std::size_t bodies_with_shapes_ = 0;

@@ -22,21 +22,14 @@ std::string number_text(const Vec2& v) {
 
 namespace {
 
-void finite(double value, const std::string& field) {
-  if (!std::isfinite(value)) throw InputError(field, "must be a finite number", number_text(value));
-}
-
-void finite(const Vec2& value, const std::string& field) {
-  if (!value.allFinite()) throw InputError(field, "must be finite numbers", number_text(value));
-}
 
 void positive(double value, const std::string& field, const std::string& why) {
-  finite(value, field);
+  validate_finite(value, field);
   if (!(value > 0.0)) throw InputError(field, "must be > 0 (" + why + ")", number_text(value));
 }
 
 void non_negative(double value, const std::string& field) {
-  finite(value, field);
+  validate_finite(value, field);
   if (!(value >= 0.0)) throw InputError(field, "must be >= 0", number_text(value));
 }
 
@@ -54,30 +47,38 @@ constexpr int kMaxDirectSolvePoints = 256;
 
 }  // namespace
 
+void validate_finite(double value, const std::string& field) {
+  if (!std::isfinite(value)) throw InputError(field, "must be a finite number", number_text(value));
+}
+
+void validate_finite(const Vec2& value, const std::string& field) {
+  if (!value.allFinite()) throw InputError(field, "must be finite numbers", number_text(value));
+}
+
 void validate_body(const BodyDef& def, const std::string& prefix) {
-  finite(def.position, prefix + ".position");
-  finite(def.angle, prefix + ".angle");
+  validate_finite(def.position, prefix + ".position");
+  validate_finite(def.angle, prefix + ".angle");
   constexpr double two_pi = 2.0 * std::numbers::pi;
   if (def.angle < 0.0 || def.angle > two_pi) {
     throw InputError(prefix + ".angle", "must be in [0, 2π] (SRS software constraint on ϕ)",
                      number_text(def.angle));
   }
-  finite(def.velocity, prefix + ".velocity");
-  finite(def.angular_velocity, prefix + ".angular_velocity");
-  finite(def.force, prefix + ".force");
-  finite(def.torque, prefix + ".torque");
-  if (def.force_point) finite(*def.force_point, prefix + ".force_point");
+  validate_finite(def.velocity, prefix + ".velocity");
+  validate_finite(def.angular_velocity, prefix + ".angular_velocity");
+  validate_finite(def.force, prefix + ".force");
+  validate_finite(def.torque, prefix + ".torque");
+  if (def.force_point) validate_finite(*def.force_point, prefix + ".force_point");
   if (def.mass) positive(*def.mass, prefix + ".mass", "SRS data constraint m > 0");
   if (def.moment) positive(*def.moment, prefix + ".moment", "SRS data constraint I > 0");
   for (std::size_t k = 0; k < def.shapes.size(); ++k) {
     const ShapeDef& s = def.shapes[k];
     const std::string field = prefix + ".shapes[" + std::to_string(k) + "]";
-    finite(s.restitution, field + ".restitution");
+    validate_finite(s.restitution, field + ".restitution");
     if (s.restitution < 0.0 || s.restitution > 1.0) {
       throw InputError(field + ".restitution", "must be in [0, 1] (SRS data constraint on C_R)",
                        number_text(s.restitution));
     }
-    finite(s.friction, field + ".friction");
+    validate_finite(s.friction, field + ".friction");
     if (s.friction < 0.0)
       throw InputError(field + ".friction", "must be >= 0", number_text(s.friction));
     positive(s.density, field + ".density", "mass per unit area");
@@ -95,9 +96,9 @@ void validate_body(const BodyDef& def, const std::string& prefix) {
 }
 
 void validate_settings(const Settings& settings) {
-  finite(settings.gravity, "gravity");
+  validate_finite(settings.gravity, "gravity");
   if (settings.G) {
-    finite(*settings.G, "G");
+    validate_finite(*settings.G, "G");
     if (*settings.G < 0.0) throw InputError("G", "must be >= 0", number_text(*settings.G));
   }
   count_up_to(settings.velocity_iterations, kMaxIterations, "velocity_iterations");

@@ -19,6 +19,10 @@ void validate_settings(const Settings& settings);
 /// Checks a time step: finite and > 0.
 void validate_step(double dt, const std::string& field);
 
+/// Checks that `value` is finite, naming `field` when it is not (the Space's setters too).
+void validate_finite(double value, const std::string& field);
+void validate_finite(const Vec2& value, const std::string& field);
+
 /// A number as the checks' messages show it: 17 significant digits, "nan" for any NaN.
 std::string number_text(double value);
 /// A vector as "[x, y]", each coordinate as number_text shows it.

@@ -35,6 +35,8 @@ test("the audit page shows every SRS id, each model's equation typeset by KaTeX"
     }
     assert.equal(await page.locator(".katex-error").count(), 0, "KaTeX reported no error");
     assert.equal(await page.locator("#no-katex").count(), 0);
+    // Written by `audit` alone, beside no report: no link to one.
+    assert.equal(await page.locator('a[href="index.html"]').count(), 0);
     const symbols = await page.locator(".symbols .katex").count();
     assert.ok(symbols > 0);
     const matrices = await page.$$eval("table.matrix", (ts) => ts.map((t) => t.id));

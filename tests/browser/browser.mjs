@@ -19,8 +19,9 @@ export function gamephysics(...args) {
 }
 
 /// A page of a fresh headless chromium (new user-data-dir), with every request that leaves
-/// the file (anything but file: and data: URLs) and every script error recorded.
-export async function openPage(file) {
+/// the file (anything but file: and data: URLs) and every script error recorded; `hash` is
+/// appended to the file's URL (e.g. "#t=1.4").
+export async function openPage(file, hash = "") {
   const profile = mkdtempSync(path.join(tmpdir(), "gp-chromium-"));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: "/usr/bin/chromium",
@@ -35,7 +36,7 @@ export async function openPage(file) {
   page.on("request", (r) => { if (!/^(file|data):/.test(r.url())) requests.push(r.url()); });
   page.on("pageerror", (e) => errors.push(String(e)));
   page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
-  await page.goto("file://" + path.resolve(file));
+  await page.goto("file://" + path.resolve(file) + hash);
   const close = async () => { await context.close(); rmSync(profile, { recursive: true, force: true }); };
   return { page, requests, errors, close };
 }

@@ -117,3 +117,109 @@ test("the viewer overlays the oracle on the oblique collision", async () => {
     await close();
   }
 });
+
+// Whether `v` is a whole multiple of `step`, a round step of 1, 2 or 5 × 10^n.
+function roundMultiple(v, step) {
+  const mantissa = step / 10 ** Math.floor(Math.log10(step) + 1e-9);
+  return [1, 2, 5].some((m) => Math.abs(mantissa - m) < 1e-9) &&
+    Math.abs(v / step - Math.round(v / step)) < 1e-9;
+}
+
+test("the viewer opens at the instant and body its URL names, and plays with #play", async () => {
+  const html = path.join(out, "browser_ball_opening.html");
+  gamephysics("view", scene, "--out", html);
+  for (const [hash, playing] of [["#t=1.4&body=ball", false], ["#t=1.4&body=ball&play", true]]) {
+    const { page, errors, close } = await openPage(html, hash);
+    try {
+      await page.waitForFunction(() => window.gp !== undefined);
+      // Frames every 1/60 s: the nearest to 1.4 s is within half of that (and playing, the page
+      // has moved on from there by the time it is asked).
+      const t = await page.evaluate(() => window.gp.time());
+      assert.ok(t >= 1.4 - 1 / 120 - 1e-12 && (playing || t <= 1.4 + 1 / 120 + 1e-12),
+        `${hash}: opened at t = ${t}`);
+      assert.equal(await page.evaluate(() => window.gp.selected()), "ball");
+      assert.equal(await page.evaluate(() => window.gp.playing()), playing, hash);
+      if (playing) await page.waitForFunction((t0) => window.gp.time() > t0, t);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test("the viewer's impulses, scale bar and plot ticks read as a lecture needs", async () => {
+  const html = path.join(out, "browser_ball_lecture.html");
+  gamephysics("view", scene, "--out", html);
+  const { page, errors, close } = await openPage(html, "#t=1.4");
+  try {
+    await page.waitForFunction(() => window.gp !== undefined);
+    // 8 ms after the first impact (t_c = 1.3917 s): the ball's impulse is the bold arrow, the
+    // static ground's the faint one, unless the ground is selected.
+    const arrows = await page.evaluate(() => window.gp.impulseArrows());
+    assert.deepEqual(arrows, [{ body: "ground", bold: false }, { body: "ball", bold: true }]);
+    await page.evaluate(() => window.gp.select("ground"));
+    assert.deepEqual(await page.evaluate(() => window.gp.impulseArrows()),
+      [{ body: "ground", bold: true }, { body: "ball", bold: false }]);
+    // The scale bar is a round length drawn at the page's scale, within 120 px and more than
+    // 120 / 2.5 px (the next round length down is at most 2.5 times shorter).
+    const bar = await page.evaluate(() => window.gp.scaleBar());
+    const scale = await page.evaluate(() => window.gp.pixelsPerMetre);
+    assert.ok(roundMultiple(bar.metres, bar.metres), `scale bar ${bar.metres} m`);
+    assert.ok(Math.abs(bar.pixels - bar.metres * scale) < 1e-9 && bar.pixels <= 120 && bar.pixels > 48);
+    // Plot ticks: whole multiples of one round step, 0 among them when the axis crosses it.
+    for (const id of ["energy-plot", "momentum-plot"]) {
+      const ticks = await page.evaluate((id) => window.gp.ticks(id), id);
+      const step = ticks[1] - ticks[0];
+      assert.ok(ticks.length >= 3 && ticks.every((v) => roundMultiple(v, step)), `${id}: ${ticks}`);
+    }
+    assert.ok((await page.evaluate(() => window.gp.ticks("momentum-plot"))).includes(0));
+    // 60 frames a second: no note about sparse output.
+    assert.equal(await page.textContent("#note"), "");
+    await page.screenshot({ path: path.join(out, "viewer_ball_lecture.png") });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test("the viewer says when the output is too sparse to play smoothly, and its log plot has decades", async () => {
+  const html = path.join(out, "browser_oblique_sparse.html");
+  // The oblique collision every 0.1 s: 10 frames a second.
+  gamephysics("view", path.join(root, "scenes/oblique.json"), "--out", html, "--oracle",
+    "--output-dt", "0.1");
+  const { page, errors, close } = await openPage(html);
+  try {
+    await page.waitForFunction(() => window.gp !== undefined);
+    assert.match(await page.textContent("#note"), /10 frames a simulated second.*--output-dt 0\.02/);
+    const decades = await page.evaluate(() => window.gp.ticks("error-plot"));
+    assert.ok(decades.length >= 2 && decades.every((v) => Number.isInteger(Math.log10(v))),
+      `error plot ticks ${decades}`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test("with --audit, the inspector's SRS ids link to their entries on the audit page", async () => {
+  const dir = path.join(out, "browser_linked");
+  gamephysics("audit", "--root", root, "--out", dir);
+  const html = path.join(dir, "ball.html");
+  gamephysics("view", scene, "--out", html, "--audit", "audit.html");
+  const { page, errors, close } = await openPage(html, "#t=1.5&body=ball");
+  try {
+    await page.waitForFunction(() => window.gp !== undefined);
+    const links = await page.$$eval("#body-table td.id a", (as) => as.map((a) => a.getAttribute("href")));
+    assert.ok(links.includes("audit.html#DD%3AkEnergy"), `links: ${links}`);
+    // Followed, each lands on the audit page's section of that id.
+    await page.click('#body-table td.id a[href="audit.html#DD%3AkEnergy"]');
+    await page.waitForURL(/audit\.html#DD%3AkEnergy$/);
+    assert.equal(await page.locator('[id="DD:kEnergy"].srs-item').count(), 1);
+    for (const href of new Set(links)) {
+      const id = decodeURIComponent(href.split("#")[1]);
+      assert.equal(await page.locator(`[id="${id}"]`).count(), 1, `${id} has an entry`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

@@ -259,8 +259,11 @@ void write_audit_page(std::ostream& out, const SrsAudit& audit, const AuditEvide
       << c.all_ids().size() << " items) with its equation, the C++ function that implements it, "
       << "the tests tagged with its id, the verification checks that name it and their results, "
       << "its dimensional check and its errata. Made by <code>gamephysics "
-      << (checks.empty() ? "audit" : "verify") << "</code>; the full report is <a "
-      << "href=\"index.html\">index.html</a>.</p>";
+      << (checks.empty() ? "audit" : "verify")
+      << "</code>"
+      // `audit` alone writes no report beside the page, so nothing to link to.
+      << (checks.empty() ? "" : "; the full report is <a href=\"index.html\">index.html</a>")
+      << ".</p>";
   if (!katex) {
     out << "<p class=\"note\" id=\"no-katex\">KaTeX is not installed, so the equations are shown "
            "as LaTeX source: run <code>tools/install-web.sh</code> and write the page again.</p>";

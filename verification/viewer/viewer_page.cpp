@@ -184,6 +184,7 @@ void write_viewer_page(std::ostream& out, const ViewerRun& run) {
       {"frames", frames_json(run.recording)},
       {"impacts", impacts_json(run.space, run.recording)},
       {"oracle", oracle_json(run)},
+      {"audit", run.audit_page},
   };
   const std::string page =
       fill(viewer_assets::kHtml, {{"GP_TITLE", html_escape(run.title)},

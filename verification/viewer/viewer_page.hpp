@@ -23,6 +23,8 @@ struct ViewerRun {
   /// The oracle's solution at the same instants, to overlay, and the name of its method.
   const OracleResult* oracle = nullptr;
   std::string oracle_method;
+  /// The audit page as the page links to it ("audit.html"); empty: SRS ids are not links.
+  std::string audit_page;
 };
 
 /// Writes the page of `run` to `out`.

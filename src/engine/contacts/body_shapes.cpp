@@ -34,4 +34,24 @@ BodyShapes::Range BodyShapes::of_body(BodyId body) const {
   return {first, last};
 }
 
+BodyShapes::Range BodyShapes::remove_body(BodyId body) {
+  const Range removed = of_body(body);
+  // The polygons' blocks are in the order of their shapes.
+  const auto is_polygon = [](const ShapeRecord& r) {
+    return r.local.kind() == ShapeKind::kPolygon;
+  };
+  const auto before = records_.begin() + removed.first;
+  const auto after = records_.begin() + removed.last;
+  const auto first_block = std::count_if(records_.begin(), before, is_polygon);
+  const auto blocks = std::count_if(before, after, is_polygon);
+  for (auto r = before; r != after; ++r) {
+    if (is_polygon(*r)) polygon_vertices_ -= r->local.polygon().vertices.size();
+  }
+  polygons_.erase(polygons_.begin() + first_block, polygons_.begin() + first_block + blocks);
+  records_.erase(before, after);
+  const std::uint32_t count = removed.last - removed.first;
+  for (std::size_t b = body + std::size_t{1}; b < first_.size(); ++b) first_[b] -= count;
+  return removed;
+}
+
 }  // namespace gp

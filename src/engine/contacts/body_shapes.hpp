@@ -51,6 +51,9 @@ class BodyShapes {
     std::uint32_t last;
   };
   Range of_body(BodyId body) const;
+  /// Removes the shapes of `body` and returns the indices they had: the shapes after them move
+  /// down by as many, and `body` keeps an empty range.
+  Range remove_body(BodyId body);
 
   /// Places every moving shape by its body's centre of mass `position` and orientation `angle`,
   /// indexed by body id (static shapes once, on the first call).

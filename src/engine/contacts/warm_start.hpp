@@ -24,6 +24,12 @@ struct WarmStart {
     return (std::uint64_t{pair.first} << kShapeBits) | pair.second;
   }
 
+  /// The pair of shapes whose pair_key is `pair`.
+  static ProxyPair pair_of(std::uint64_t pair) {
+    return {static_cast<std::uint32_t>(pair >> kShapeBits),
+            static_cast<std::uint32_t>(pair & ((std::uint64_t{1} << kShapeBits) - 1))};
+  }
+
   /// The key of a point: its pair's key (pair_key), then its features' (FeatureId::key).
   static std::uint64_t key_of(std::uint64_t pair, std::uint16_t features) {
     return pair << 16 | features;

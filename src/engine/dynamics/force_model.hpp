@@ -42,6 +42,16 @@ class ForceModel {
   /// `inverse_moment` (1/(kg·m²), 0 if it does not rotate).
   void set_callback(BodyId id, double inverse_moment, ForceCallback callback);
 
+  /// Adds a force [N] at the centre of mass and a torque [N·m] to dynamic body `id` (inverse
+  /// moment as for set_callback) for the next step only, as a constant force does; end_step()
+  /// takes them away again.
+  void add_for_next_step(BodyId id, double inverse_moment, const Wrench& wrench);
+  /// Ends a step: the forces of add_for_next_step are gone, and the model is again exactly as it
+  /// was before them.
+  void end_step();
+  /// Removes dynamic body `id`, which no longer pushes or is pushed.
+  void remove(BodyId id);
+
   /// Accelerations of the dynamic bodies at time `t` in state `s` (other entries untouched).
   void evaluate(double t, const MotionState& s, Accelerations& out) const;
 
@@ -87,6 +97,7 @@ class ForceModel {
   struct Applied {
     std::uint32_t entry;
     BodyForces forces;
+    Wrench next_step{};  ///< for the next step only (add_for_next_step)
   };
   /// The accelerations of a body pushed beyond gravity by constant forces.
   struct Pushed {
@@ -96,6 +107,16 @@ class ForceModel {
   };
   /// Whether `forces` push the body beyond gravity, so that it needs an Applied.
   static bool beyond_gravity(const BodyForces& forces);
+  /// The constant accelerations of `body` under `applied`, with its forces for the next step.
+  Pushed pushed_by(BodyId body, const Applied& applied, bool with_next_step) const;
+  /// The Applied of entry `entry` of bodies() in `applied`, made for a body of gravity only so
+  /// far, whose inverse moment is `inverse_moment`.
+  std::vector<Applied>::iterator applied_at(std::vector<Applied>& applied, std::uint32_t entry,
+                                            double inverse_moment) const;
+  /// Calls change(applied, pushed) on applied_ and pushed_, and on the ones end_step() will
+  /// restore, so that a change made between add_for_next_step and the step outlasts the step.
+  template <typename Change>
+  void in_each(Change change);
   /// The Pushed of `body`, null for a body of gravity only.
   const Pushed* pushed(BodyId body) const {
     if (pushed_.empty()) return nullptr;  // the common case: gravity alone
@@ -115,6 +136,12 @@ class ForceModel {
   // Their accelerations under constant forces, by body id; meaningless, and unread, for forces
   // applied at a point or given by a callback, which are not constant.
   std::vector<Pushed> pushed_;
+  // applied_ and pushed_ as they were before add_for_next_step, restored by end_step().
+  struct Saved {
+    std::vector<Applied> applied;
+    std::vector<Pushed> pushed;
+  };
+  std::optional<Saved> before_next_step_;
 };
 
 /// The accelerations of the bodies at the start of a step, which the ballistic paths follow: under

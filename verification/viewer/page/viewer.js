@@ -101,9 +101,9 @@
 
   function drawBody(i, st, ghost) {
     const b = bodies[i], c = colours[i];
-    if (b.shapes.length === 0) {  // a point mass: a dot of fixed size
+    if (b.shapes.length === 0) {  // a point mass: a dot of fixed size; the oracle's ring around it
       const [x, y] = toScreen(st[0], st[1]);
-      ctx.beginPath(); ctx.arc(x, y, 6, 0, 2 * Math.PI);
+      ctx.beginPath(); ctx.arc(x, y, ghost ? 11 : 7, 0, 2 * Math.PI);
       if (ghost) { ctx.setLineDash([3, 3]); ctx.strokeStyle = "rgba(0,0,0,0.7)"; ctx.lineWidth = 1.5; ctx.stroke(); ctx.setLineDash([]); }
       else { ctx.fillStyle = rgb(c); ctx.fill(); }
     }
@@ -130,8 +130,26 @@
     }
   }
 
+  // A scale bar in the lower left corner: the longest round length (1, 2 or 5 × 10^n m) within
+  // 120 px.
+  const scaleBar = (() => {
+    const most = 120 / view.scale, decade = 10 ** Math.floor(Math.log10(most));
+    const metres = [5, 2, 1].map((m) => m * decade).find((l) => l <= most);
+    return { metres, pixels: metres * view.scale };
+  })();
+  function drawScaleBar() {
+    const x = 12, y = world.height - 14;
+    ctx.strokeStyle = "#333"; ctx.fillStyle = "#333"; ctx.lineWidth = 2;
+    ctx.beginPath(); ctx.moveTo(x, y - 5); ctx.lineTo(x, y); ctx.lineTo(x + scaleBar.pixels, y);
+    ctx.lineTo(x + scaleBar.pixels, y - 5); ctx.stroke();
+    ctx.font = "12px sans-serif";
+    ctx.fillText(`${Number(scaleBar.metres.toPrecision(1))} m`, x + scaleBar.pixels + 6, y + 2);
+  }
+
+  let impulseArrows = [];  // those of the last frame drawn, for the tests
   function drawWorld() {
     const k = state.frame;
+    impulseArrows = [];
     ctx.clearRect(0, 0, world.width, world.height);
     const states = frames.states[k];
     if (show("show-trails")) {
@@ -170,6 +188,8 @@
         arrow([c[2], c[3]], [c[4] * c[6], c[5] * c[6]], contactScale, "#0a7", 1.5);
       }
       // Impacts of the last 0.3 s, fading: the point, and J = j n on A and −J on B (GD:impulse).
+      // The impulse on the selected body, or with none selected on a dynamic body, is the bold
+      // one: a static ground's points out of the picture and moves nothing.
       for (const im of data.impacts) {
         const age = times[k] - im.t;
         if (age < 0 || age > 0.3) continue;
@@ -178,20 +198,37 @@
         ctx.fillStyle = `rgba(200,0,0,${alpha})`;
         ctx.beginPath(); ctx.arc(x, y, 4, 0, 2 * Math.PI); ctx.fill();
         const J = [im.j * im.normal[0], im.j * im.normal[1]];
-        arrow(im.point, J, impulseScale, `rgba(200,0,0,${alpha})`, 2.5);
-        arrow(im.point, [-J[0], -J[1]], impulseScale, `rgba(120,0,0,${alpha})`, 1.5);
+        for (const [body, sign] of [[im.a, 1], [im.b, -1]]) {
+          const bold = state.selected !== null ? state.selected === body : bodies[body].type === "dynamic";
+          arrow(im.point, [sign * J[0], sign * J[1]], impulseScale,
+            bold ? `rgba(200,0,0,${alpha})` : `rgba(200,0,0,${0.3 * alpha})`, bold ? 3 : 1);
+          impulseArrows.push({ body: bodies[body].name, bold });
+        }
       }
     }
+    drawScaleBar();
   }
 
-  // An axis label: 3 significant digits, in powers of ten when long; 0 when it is rounding noise
-  // against the axis' span.
-  const axisNumber = (v, span) => {
-    if (Math.abs(v) < 1e-9 * span) return "0";
-    return Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3 ? v.toExponential(2) : Number(v.toPrecision(3)).toString();
-  };
+  // Round ticks over [lo, hi]: multiples of a step of 1, 2 or 5 × 10^n, about five of them, each
+  // computed from its index so that no rounding accumulates (0.30000000000000004).
+  function roundTicks(lo, hi) {
+    const raw = (hi - lo) / 5, decade = 10 ** Math.floor(Math.log10(raw));
+    const step = [1, 2, 5, 10].map((m) => m * decade).find((s) => s >= raw * (1 - 1e-9));
+    const digits = Math.max(0, -Math.floor(Math.log10(step)));
+    const ticks = [];
+    for (let n = Math.ceil(lo / step - 1e-9); n * step <= hi * (1 + 1e-12) + 1e-300; ++n) {
+      ticks.push(Number((n * step).toFixed(Math.min(digits, 20))));
+    }
+    return ticks;
+  }
+  // An axis label: the tick's round value, in powers of ten when long.
+  const axisNumber = (v) =>
+    v !== 0 && (Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3) ? v.toExponential(1) : String(v);
 
   // A line plot of `series` ({label, colour, values}) over time, with the current instant marked.
+  // Linear axes get round ticks, a zero line when 0 is inside and a margin, so that a curve along
+  // the top or the bottom stays in sight; log axes get whole decades.
+  const drawnTicks = {};  // per plot, for the tests
   function plot(canvas, series, log) {
     const g = canvas.getContext("2d");
     const W = canvas.width, H = canvas.height, left = 70, right = 10, top = 10, bottom = 38;
@@ -201,16 +238,33 @@
     for (const s of series) for (const v of s.values) { lo = Math.min(lo, f(v)); hi = Math.max(hi, f(v)); }
     if (!isFinite(lo)) { lo = 0; hi = 1; }
     if (hi - lo < 1e-12 * Math.max(1, Math.abs(hi))) { lo -= 0.5 * Math.max(1, Math.abs(lo)); hi += 0.5 * Math.max(1, Math.abs(hi)); }
+    let ticks;
+    if (log) {
+      lo = Math.floor(lo); hi = Math.max(Math.ceil(hi), lo + 1);
+      const every = Math.ceil((hi - lo) / 6);
+      ticks = [];
+      for (let d = lo; d <= hi; d += every) ticks.push(d);
+    } else {
+      const margin = 0.05 * (hi - lo);
+      lo -= margin; hi += margin;
+      ticks = roundTicks(lo, hi);
+    }
+    drawnTicks[canvas.id] = log ? ticks.map((d) => 10 ** d) : ticks;
     const t0 = times[0], t1 = times[count - 1] > t0 ? times[count - 1] : t0 + 1;
     const px = (t) => left + ((t - t0) / (t1 - t0)) * (W - left - right);
     const py = (v) => top + (1 - (f(v) - lo) / (hi - lo)) * (H - top - bottom);
+    const pyAxis = (a) => top + (1 - (a - lo) / (hi - lo)) * (H - top - bottom);
     g.strokeStyle = "#999"; g.lineWidth = 1; g.strokeRect(left, top, W - left - right, H - top - bottom);
     g.fillStyle = "#333"; g.font = "11px sans-serif";
-    for (let n = 0; n <= 4; ++n) {
-      const v = lo + (n / 4) * (hi - lo), y = top + (1 - n / 4) * (H - top - bottom);
-      g.fillText(log ? `1e${v.toFixed(1)}` : axisNumber(v, hi - lo), 4, y + 4);
-      const t = t0 + (n / 4) * (t1 - t0);
-      g.fillText(`${Number(t.toPrecision(3))} s`, px(t) - 12, H - bottom + 14);
+    for (const a of ticks) {
+      const y = pyAxis(a);
+      g.strokeStyle = "#eee"; g.beginPath(); g.moveTo(left, y); g.lineTo(W - right, y); g.stroke();
+      g.fillText(log ? `1e${a}` : axisNumber(a), 4, y + 4);
+    }
+    for (const t of roundTicks(t0, t1)) g.fillText(`${t} s`, px(t) - 12, H - bottom + 14);
+    if (!log && lo < 0 && hi > 0) {
+      g.strokeStyle = "#888"; g.setLineDash([4, 3]); g.beginPath();
+      g.moveTo(left, py(0)); g.lineTo(W - right, py(0)); g.stroke(); g.setLineDash([]);
     }
     let lx = left + 6;
     for (const s of series) {
@@ -294,7 +348,13 @@
     for (const [label, id, value, unit] of rows) {
       const tr = table.insertRow();
       tr.insertCell().textContent = label;
-      const cell = tr.insertCell(); cell.textContent = id; cell.className = "id";
+      const cell = tr.insertCell(); cell.className = "id";
+      if (id && data.audit) {  // the entry of the SRS id on the audit page
+        const link = cell.appendChild(document.createElement("a"));
+        link.href = `${data.audit}#${encodeURIComponent(id)}`; link.textContent = id;
+      } else {
+        cell.textContent = id;
+      }
       const v = tr.insertCell(); v.textContent = value; v.className = "value";
       tr.insertCell().textContent = unit;
     }
@@ -382,6 +442,14 @@
     if (e.key === "ArrowLeft") { pause(); setFrame(state.frame - 1); }
   });
 
+  // Fewer than 24 frames a simulated second play as a slideshow at 1×: say so, and how to fix it.
+  const framesPerSecond = 1 / data.output_dt;
+  if (framesPerSecond < 24) {
+    $("note").textContent = `This run has ${Number(framesPerSecond.toPrecision(3))} frames a simulated ` +
+      `second, too few for smooth playback at 1×: make the page again with --output-dt 0.02 ` +
+      `(gamephysics view SCENE.json --output-dt 0.02 --out PAGE.html).`;
+  }
+
   const index = (name) => bodies.findIndex((b) => b.name === name);
   // For tests and scripts: where things are drawn, in canvas pixels.
   window.gp = {
@@ -395,6 +463,21 @@
     bodyColour: (name) => colours[index(name)],
     bodyScreenPosition: (name) => { const s = frames.states[state.frame][index(name)]; return toScreen(s[0], s[1]); },
     select: (name) => { state.selected = index(name) < 0 ? null : index(name); render(); },
+    selected: () => (state.selected === null ? null : bodies[state.selected].name),
+    scaleBar: () => scaleBar,
+    ticks: (id) => drawnTicks[id],
+    impulseArrows: () => impulseArrows,
   };
+  // Opened as PAGE.html#t=1.4&body=ball&play: at the frame nearest that instant, with that body
+  // selected, playing (each part optional).
+  const opening = new URLSearchParams(location.hash.slice(1));
+  if (opening.has("t")) {
+    const t = Number(opening.get("t"));
+    let k = 0;
+    times.forEach((tk, n) => { if (Math.abs(tk - t) < Math.abs(times[k] - t)) k = n; });
+    state.frame = k; state.simTime = times[k];
+  }
+  if (opening.has("body") && index(opening.get("body")) >= 0) state.selected = index(opening.get("body"));
   render();
+  if (opening.has("play")) play();
 })();

@@ -1,0 +1,81 @@
+"""load_scene and simulate against closed forms and against the command line."""
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import gamephysics as gp
+
+G = 9.81  # m/s²
+
+
+def ball_scene(path, restitution):
+    """bouncing_ball.json with another C_R: a ball of radius 0.5 m dropped from 10 m."""
+    scene = {
+        "gravity": [0, -G], "dt": 1 / 60, "duration": 4.0, "output_dt": 0.01,
+        "bodies": [
+            {"name": "ground", "type": "static", "position": [0, 0],
+             "shapes": [{"type": "segment", "a": [-10, 0], "b": [10, 0],
+                         "restitution": restitution}]},
+            {"name": "ball", "position": [0, 10],
+             "shapes": [{"type": "circle", "radius": 0.5, "restitution": restitution}]}]}
+    path.write_text(json.dumps(scene))
+    return str(path)
+
+
+@pytest.mark.parametrize("restitution", [0.5, 0.8, 1.0])
+def test_a_bounce_follows_the_closed_form(tmp_path, restitution):
+    run = gp.simulate(ball_scene(tmp_path / "ball.json", restitution))
+    y = run["ball"].y
+    # Free fall from 10 m to the ground at 0.5 m: t₁ = √(2 · 9.5 / g), v₁ = g t₁; then up at
+    # C_R v₁ and down again: y = 0.5 + C_R v₁ (t − t₁) − ½ g (t − t₁)² until t₂ = t₁ + 2 C_R v₁ / g.
+    t1 = math.sqrt(2 * 9.5 / G)
+    v1 = G * t1
+    t2 = t1 + 2 * restitution * v1 / G
+    t = run.t
+    before = t < t1
+    after = (t > t1) & (t < min(t2, 4.0))
+    exact_before = 10 - 0.5 * G * t[before] ** 2
+    exact_after = 0.5 + restitution * v1 * (t[after] - t1) - 0.5 * G * (t[after] - t1) ** 2
+    # Exact ballistic paths and the impact at its time of impact: rounding only (1e-9 is 1e6
+    # times the rounding of 10 m, well under the 1e-6 the oracle test allows the game's run).
+    assert np.max(np.abs(y[before] - exact_before)) < 1e-9
+    assert np.max(np.abs(y[after] - exact_after)) < 1e-9
+    assert after.sum() > 50
+    # The top of the first rebound: 0.5 + C_R² · 9.5 m.
+    assert np.max(y[after]) == pytest.approx(0.5 + restitution ** 2 * 9.5, abs=1e-3)
+
+
+def test_simulate_gives_the_command_lines_numbers(tmp_path, root, cli):
+    csv = tmp_path / "projectile.csv"
+    subprocess.run([cli, "simulate", str(root / "scenes/projectile.json"), "--out", str(csv),
+                    "--integrator", "rk4"], check=True, capture_output=True)
+    rows = np.genfromtxt(csv, delimiter=",", skip_header=1, usecols=(0, 2, 3, 4, 5, 6, 7))
+    run = gp.simulate(gp.load_scene(str(root / "scenes/projectile.json")), integrator="rk4")
+    body = run["projectile"]
+    ours = np.column_stack([run.t, body.x, body.y, body.angle, body.vx, body.vy, body.omega])
+    # %.17g in the CSV reads back to the same double.
+    assert np.array_equal(ours, rows)
+
+
+def test_a_bad_scene_raises_the_command_lines_message(tmp_path, cli):
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"dt": 0.01, "duration": 1, "bodies": '
+                   '[{"name": "b", "position": [0, 0], "mass": -1}]}')
+    result = subprocess.run([cli, "simulate", str(bad), "--out", str(tmp_path / "bad.csv")],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    with pytest.raises(gp.InputError) as error:
+        gp.load_scene(str(bad))
+    assert "error: " + str(error.value) + "\n" == result.stderr
+    assert str(error.value).endswith("bodies[0].mass: must be > 0 (SRS data constraint m > 0), got -1")
+
+
+def test_a_bad_option_raises_as_on_the_command_line(root):
+    with pytest.raises(gp.InputError, match='integrator: must be one of symplectic_euler, '
+                                            'velocity_verlet, rk4, got "euler"'):
+        gp.simulate(str(root / "scenes/projectile.json"), integrator="euler")
+    with pytest.raises(gp.InputError, match=r"dt: must be > 0"):
+        gp.simulate(gp.load_scene(str(root / "scenes/projectile.json")), dt=-1.0)
