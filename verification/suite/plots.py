@@ -93,12 +93,34 @@ def accuracy(out, made):
     made.append("accuracy.png")
 
 
+def pile_energy(out, made):
+    # The chaotic pile: energy over time, ours against the oracle (trajectories are not compared).
+    data = rows(os.path.join(out, "data", "pile_energy.csv"))
+    for scene in sorted({r["scene"] for r in data}):
+        fig, ax = plt.subplots(figsize=(6, 4.5))
+        for source in sorted({r["source"] for r in data if r["scene"] == scene}):
+            points = [r for r in data if r["scene"] == scene and r["source"] == source]
+            ax.plot([float(r["time"]) for r in points], [float(r["energy"]) for r in points],
+                    marker="." if source == "ours" else None, label=source)
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("mechanical energy [J]")
+        ax.set_title(f"energy over time: {scene}")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+        name = f"energy_{scene}.png"
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, name), dpi=110)
+        plt.close(fig)
+        made.append(name)
+
+
 def main():
     out = sys.argv[1]
     made = []
     accuracy(out, made)
     convergence(out, made)
     work_precision(out, made)
+    pile_energy(out, made)
     with open(os.path.join(out, "plots.txt"), "w") as f:
         f.write("".join(name + "\n" for name in made))
 
