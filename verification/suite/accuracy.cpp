@@ -4,7 +4,6 @@
 #include <sstream>
 #include <string_view>
 
-#include "engine/output/output_times.hpp"
 #include "verification/suite/oracle_domain.hpp"
 #include "verification/suite/oracle_trajectory.hpp"
 #include "verification/suite/suite.hpp"
@@ -72,13 +71,8 @@ std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const 
     Scene scene = original;
     if (o.quick) scene.duration = std::min(scene.duration, 1.0);
     if (o.progress) *o.progress << "  accuracy: " << name << "\n";
-    const OutputTimes instants(scene.duration, scene.dt);
-    std::vector<double> times;
-    for (std::size_t k = 0; k < instants.size(); ++k) times.push_back(instants[k]);
-    OracleOptions options;
-    // Orbits accumulate the per-step tolerance over many steps: tighter there, so that the two
-    // oracles agree to 1e-9.
-    options.rtol = options.atol = scene.settings.G ? 1e-14 : 1e-12;
+    const std::vector<double> times = output_instants(scene.duration, scene.dt);
+    OracleOptions options = reference_options(scene);
     const auto reference = oracle_reference(list, name, scene, times, options);
     if (!reference) continue;
     const Trajectory& cvode = reference->trajectory;

@@ -6,7 +6,6 @@
 #include <functional>
 #include <sstream>
 
-#include "engine/output/output_times.hpp"
 #include "verification/suite/oracle_trajectory.hpp"
 #include "verification/suite/suite.hpp"
 
@@ -106,9 +105,7 @@ std::vector<Check> closed_form_checks(const std::vector<NamedScene>& scenes,
     }
     const Scene& scene = named->scene;
     if (o.progress) *o.progress << "  closed forms: " << c.scene << "\n";
-    const OutputTimes output(scene.duration, scene.output_dt);
-    std::vector<double> times;
-    for (std::size_t k = 0; k < output.size(); ++k) times.push_back(output[k]);
+    const std::vector<double> times = output_instants(scene.duration, scene.output_dt);
     Trajectory oracle;
     try {
       oracle = run_oracle_trajectory(scene, times, OracleOptions{});

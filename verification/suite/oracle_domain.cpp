@@ -32,6 +32,12 @@ std::optional<std::string_view> outside_oracle_domain(std::string_view name) {
   return std::nullopt;
 }
 
+OracleOptions reference_options(const Scene& scene) {
+  OracleOptions options;
+  options.rtol = options.atol = scene.settings.G ? 1e-14 : 1e-12;
+  return options;
+}
+
 void cannot_run(CheckList& list, const std::string& name, const std::string& who,
                 const std::string& what) {
   list.check(name + ": " + who, "", who + " failed: " + what,

@@ -19,6 +19,10 @@ namespace gp::verification {
 /// Why the oracle does not run the shipped scene `name`, or nothing when it is in the domain.
 std::optional<std::string_view> outside_oracle_domain(std::string_view name);
 
+/// The options of a reference solution: rtol = atol = 1e-12, and 1e-14 under pairwise
+/// gravitation, where orbits accumulate the per-step tolerance over many steps.
+OracleOptions reference_options(const Scene& scene);
+
 /// An oracle solution used as a reference, with its own error estimate.
 struct OracleReference {
   Trajectory trajectory;                  ///< at the options given

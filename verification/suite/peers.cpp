@@ -4,7 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "engine/output/output_times.hpp"
 #include "verification/suite/oracle_domain.hpp"
 #include "verification/suite/peer_trajectory.hpp"
 #include "verification/suite/suite.hpp"
@@ -28,12 +27,8 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
   for (const auto& [name, original] : scenes) {
     Scene scene = original;
     if (o.quick) scene.duration = std::min(scene.duration, 1.0);
-    const OutputTimes instants(scene.duration, scene.dt);
-    std::vector<double> times;
-    for (std::size_t k = 0; k < instants.size(); ++k) times.push_back(instants[k]);
-    OracleOptions options;
-    options.rtol = options.atol = scene.settings.G ? 1e-14 : 1e-12;
-    const auto reference = oracle_reference(list, name, scene, times, options);
+    const std::vector<double> times = output_instants(scene.duration, scene.dt);
+    const auto reference = oracle_reference(list, name, scene, times, reference_options(scene));
     if (!reference) continue;
     const Trajectory& oracle = reference->trajectory;
     if (o.progress) *o.progress << "  peers: " << name << "\n";

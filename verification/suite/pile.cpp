@@ -7,7 +7,6 @@
 #include <sstream>
 #include <string_view>
 
-#include "engine/output/output_times.hpp"
 #include "engine/scene/scene_space.hpp"
 #include "verification/suite/oracle_domain.hpp"
 #include "verification/suite/suite.hpp"
@@ -67,9 +66,7 @@ std::vector<Check> pile_checks(const std::vector<NamedScene>& scenes, const Suit
     Scene scene = original;
     if (o.quick) scene.duration = std::min(scene.duration, 1.0);
     if (o.progress) *o.progress << "  pile: " << name << "\n";
-    const OutputTimes output(scene.duration, scene.output_dt);
-    std::vector<double> times;
-    for (std::size_t k = 0; k < output.size(); ++k) times.push_back(output[k]);
+    const std::vector<double> times = output_instants(scene.duration, scene.output_dt);
     OracleOptions options;
     const auto reference = oracle_reference(list, name, scene, times, options);
     if (!reference) continue;

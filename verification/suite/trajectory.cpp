@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/output/output_times.hpp"
 #include "engine/scene/run.hpp"
 #include "engine/scene/scene_space.hpp"
 
@@ -91,6 +92,13 @@ Scales scales_of(const Trajectory& run) {
     }
   }
   return s;
+}
+
+std::vector<double> output_instants(double duration, double step) {
+  const OutputTimes output(duration, step);
+  std::vector<double> times;
+  for (std::size_t k = 0; k < output.size(); ++k) times.push_back(output[k]);
+  return times;
 }
 
 Differences compare(const Trajectory& run, const Trajectory& reference) {
