@@ -26,6 +26,16 @@ def positive(value):
     return max(float(value), 1e-16)
 
 
+def save(fig, ax, out, name, made):
+    # Grid, legend, file and the list of plots made: the same for every figure.
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+    made.append(name)
+
+
 def work_precision(out, made):
     data = rows(os.path.join(out, "data", "work_precision.csv"))
     for scene in sorted({r["scene"] for r in data}):
@@ -38,13 +48,7 @@ def work_precision(out, made):
         ax.set_xlabel("largest position error against the oracle [m]")
         ax.set_ylabel("CPU time per simulated second [s]")
         ax.set_title(f"speed against error: {scene}")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
-        name = f"wp_{scene}.png"
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, name), dpi=110)
-        plt.close(fig)
-        made.append(name)
+        save(fig, ax, out, f"wp_{scene}.png", made)
 
 
 def convergence(out, made):
@@ -105,13 +109,7 @@ def pile_energy(out, made):
         ax.set_xlabel("time [s]")
         ax.set_ylabel("mechanical energy [J]")
         ax.set_title(f"energy over time: {scene}")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
-        name = f"energy_{scene}.png"
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, name), dpi=110)
-        plt.close(fig)
-        made.append(name)
+        save(fig, ax, out, f"energy_{scene}.png", made)
 
 
 def main():
