@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "verification/suite/oracle_trajectory.hpp"
+#include "verification/suite/oracle_domain.hpp"
 #include "verification/suite/suite.hpp"
 
 namespace gp::verification {
@@ -31,7 +31,9 @@ std::vector<Check> convergence_checks(const std::vector<NamedScene>& scenes, con
     std::vector<double> instants;
     for (double t = 0.0; t < scene.duration - 1e-9; t += kCoarsestStep) instants.push_back(t);
     instants.push_back(scene.duration);
-    const Trajectory reference = run_oracle_trajectory(scene, instants, options);
+    const auto solved = oracle_reference(list, name, scene, instants, options);
+    if (!solved) continue;
+    const Trajectory& reference = solved->trajectory;
     const struct {
       IntegratorKind kind;
       double order;

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "engine/output/output_times.hpp"
-#include "verification/suite/oracle_trajectory.hpp"
+#include "verification/suite/oracle_domain.hpp"
 #include "verification/suite/peer_trajectory.hpp"
 #include "verification/suite/suite.hpp"
 
@@ -28,17 +27,10 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
   for (const auto& [name, original] : scenes) {
     Scene scene = original;
     if (o.quick) scene.duration = std::min(scene.duration, 1.0);
-    const OutputTimes instants(scene.duration, scene.dt);
-    std::vector<double> times;
-    for (std::size_t k = 0; k < instants.size(); ++k) times.push_back(instants[k]);
-    OracleOptions options;
-    options.rtol = options.atol = scene.settings.G ? 1e-14 : 1e-12;
-    Trajectory oracle;
-    try {
-      oracle = run_oracle_trajectory(scene, times, options);
-    } catch (const OracleDomainError&) {
-      continue;  // no reference: the accuracy section says why
-    }
+    const std::vector<double> times = output_instants(scene.duration, scene.dt);
+    const auto reference = oracle_reference(list, name, scene, times, reference_options(scene));
+    if (!reference) continue;
+    const Trajectory& oracle = reference->trajectory;
     if (o.progress) *o.progress << "  peers: " << name << "\n";
     const Differences ours =
         compare(run_engine(scene, scene.settings.integrator, scene.dt), oracle);
@@ -46,7 +38,13 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
         "ours (" + std::string(integrator_name(scene.settings.integrator)) + "): " + describe(ours);
     double best_peer = INFINITY;
     for (const auto engine : {peers::PeerEngine::Chipmunk, peers::PeerEngine::Box2d}) {
-      const Differences d = compare(run_peer_trajectory(engine, scene), oracle);
+      Differences d;
+      try {
+        d = compare(run_peer_trajectory(engine, scene), oracle);
+      } catch (const std::exception& e) {
+        cannot_run(list, name, std::string(peers::engine_name(engine)), e.what());
+        continue;
+      }
       measured += "; " + std::string(peers::engine_name(engine)) + ": " + describe(d);
       best_peer = std::min(best_peer, d.position);
       csv << name << "," << peers::engine_name(engine) << "," << scene.dt << "," << d.position

@@ -26,6 +26,16 @@ def positive(value):
     return max(float(value), 1e-16)
 
 
+def save(fig, ax, out, name, made):
+    # Grid, legend, file and the list of plots made: the same for every figure.
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+    made.append(name)
+
+
 def work_precision(out, made):
     data = rows(os.path.join(out, "data", "work_precision.csv"))
     for scene in sorted({r["scene"] for r in data}):
@@ -38,13 +48,7 @@ def work_precision(out, made):
         ax.set_xlabel("largest position error against the oracle [m]")
         ax.set_ylabel("CPU time per simulated second [s]")
         ax.set_title(f"speed against error: {scene}")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
-        name = f"wp_{scene}.png"
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, name), dpi=110)
-        plt.close(fig)
-        made.append(name)
+        save(fig, ax, out, f"wp_{scene}.png", made)
 
 
 def convergence(out, made):
@@ -93,12 +97,28 @@ def accuracy(out, made):
     made.append("accuracy.png")
 
 
+def pile_energy(out, made):
+    # The chaotic pile: energy over time, ours against the oracle (trajectories are not compared).
+    data = rows(os.path.join(out, "data", "pile_energy.csv"))
+    for scene in sorted({r["scene"] for r in data}):
+        fig, ax = plt.subplots(figsize=(6, 4.5))
+        for source in sorted({r["source"] for r in data if r["scene"] == scene}):
+            points = [r for r in data if r["scene"] == scene and r["source"] == source]
+            ax.plot([float(r["time"]) for r in points], [float(r["energy"]) for r in points],
+                    marker="." if source == "ours" else None, label=source)
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("mechanical energy [J]")
+        ax.set_title(f"energy over time: {scene}")
+        save(fig, ax, out, f"energy_{scene}.png", made)
+
+
 def main():
     out = sys.argv[1]
     made = []
     accuracy(out, made)
     convergence(out, made)
     work_precision(out, made)
+    pile_energy(out, made)
     with open(os.path.join(out, "plots.txt"), "w") as f:
         f.write("".join(name + "\n" for name in made))
 

@@ -15,11 +15,13 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
     checks.insert(checks.end(), rows.begin(), rows.end());
   };
   add(accuracy_checks(scenes, o, data));
+  add(closed_form_checks(scenes, o));
   add(convergence_checks(scenes, o, data));
   add(conservation_checks(scenes, o));
   add(hard_case_checks(o));
   add(long_run_checks(o));
   add(peer_checks(scenes, o, data));
+  add(pile_checks(scenes, o, data));
   if (!o.quick) add(work_precision_checks(scenes, o, data));
   const SpeedSection speed = speed_against_peers(o);
   write_report(o.out, checks, data, {}, speed);

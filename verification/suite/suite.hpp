@@ -38,6 +38,9 @@ std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const 
                                    CsvFiles& data);
 std::vector<Check> convergence_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
                                       CsvFiles& data);
+std::vector<Check> closed_form_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o);
+std::vector<Check> pile_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
+                               CsvFiles& data);
 std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
                                        const SuiteOptions& o);
 std::vector<Check> hard_case_checks(const SuiteOptions& o);

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "engine/output/output_times.hpp"
+#include "verification/suite/oracle_domain.hpp"
 #include "verification/suite/oracle_trajectory.hpp"
 #include "verification/suite/peer_trajectory.hpp"
 #include "verification/suite/scene_builders.hpp"
@@ -26,7 +26,9 @@ std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
   std::ostringstream csv;
   csv << "scene,method,parameter,cpu_seconds_per_simulated_second,position_error\n";
   std::vector<NamedScene> chosen;
-  for (const char* name : {"projectile", "bouncing_ball", "spinning_box", "orbit", "oblique"}) {
+  for (const char* name :
+       {"projectile", "bouncing_ball", "spinning_box", "orbit", "oblique", "ramp_slide",
+        "disc_roll", "box_drop", "stack3", "pyramid6", "heavy_stack"}) {
     for (const auto& s : scenes) {
       if (s.name == name) chosen.push_back(s);
     }
@@ -35,14 +37,13 @@ std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
   for (auto& [name, scene] : chosen) {
     if (o.quick) scene.duration = std::min(scene.duration, 0.5);
     if (o.progress) *o.progress << "  speed against error: " << name << "\n";
-    const OutputTimes output(scene.duration, kCoarsest);
-    std::vector<double> instants;
-    for (std::size_t k = 0; k < output.size(); ++k) instants.push_back(output[k]);
-    OracleOptions reference_options;
-    reference_options.rtol = reference_options.atol = 1e-12;
-    const Trajectory reference = run_oracle_trajectory(scene, instants, reference_options);
+    const std::vector<double> instants = output_instants(scene.duration, kCoarsest);
+    const auto solved = oracle_reference(list, name, scene, instants, reference_options(scene));
+    if (!solved) continue;
+    const Trajectory& reference = solved->trajectory;
     const double simulated = std::max(scene.duration, 1e-9);
     std::size_t points = 0;
+    std::string skipped;
     for (IntegratorKind kind :
          {IntegratorKind::SymplecticEuler, IntegratorKind::VelocityVerlet, IntegratorKind::RK4}) {
       for (int k = 0; k < (o.quick ? 2 : 6); ++k) {
@@ -72,14 +73,22 @@ std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
     for (int k = 0; k < (o.quick ? 2 : 6); ++k) {
       OracleOptions options;
       options.rtol = options.atol = std::pow(10.0, -4 - k);
-      const Trajectory run = run_oracle_trajectory(scene, instants, options);
+      Trajectory run;
+      try {
+        run = run_oracle_trajectory(scene, instants, options);
+      } catch (const OracleDomainError& e) {
+        // Loose tolerances can miss an event: a point the diagram cannot have, said in its row.
+        skipped += " cvode-adams at rtol " + figure(options.rtol) + ": " + e.what() + ";";
+        continue;
+      }
       const Differences d = compare(run, reference);
       csv << name << ",cvode-adams," << options.rtol << "," << run.cpu_seconds / simulated << ","
           << d.position << "\n";
       ++points;
     }
     list.report(name, "LC:Variable-ODE-Solver NFR:Performance",
-                std::to_string(points) + " points: work-precision diagram " + name + ".png");
+                std::to_string(points) + " points: work-precision diagram wp_" + name + ".png" +
+                    (skipped.empty() ? "" : "; not drawn:" + skipped));
   }
   data.emplace_back("work_precision.csv", csv.str());
   return list.rows();
