@@ -12,7 +12,7 @@ from typing import NamedTuple, Optional, Union
 import numpy as np
 
 from ._core import (BodyDef, BodyState, BodyType, InputError, Integrator, NumericalError, Scene,
-                    Settings, Shape, ShapeDef, Space, Wrench, _run, load_scene, models)
+                    Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run, load_scene, models)
 
 # So that `from gamephysics.models import dd` works: the submodules are made by the compiled part.
 sys.modules[__name__ + ".models"] = models
@@ -21,7 +21,7 @@ for _name in ("tm", "gd", "dd", "im"):
 
 __all__ = ["BodyDef", "BodyState", "BodyTrajectory", "BodyType", "InputError", "Integrator",
            "NumericalError", "Scene", "Settings", "Shape", "ShapeDef", "Space", "Trajectory",
-           "Wrench", "load_scene", "models", "simulate"]
+           "Wrench", "load_scene", "models", "oracle", "simulate"]
 
 
 class BodyTrajectory(NamedTuple):
@@ -65,3 +65,19 @@ def simulate(scene: Union[Scene, str, os.PathLike], integrator: Optional[str] = 
         # Read again, so that the options are checked as the command line checks them.
         scene = load_scene(scene.path, **overrides)
     return Trajectory(*_run(scene))
+
+
+def oracle(scene: Union[Scene, str, os.PathLike], method: str = "cvode-adams",
+           rtol: float = 1e-12, atol: float = 1e-12, duration: Optional[float] = None,
+           output_dt: Optional[float] = None) -> Trajectory:
+    """Solves a scene (a Scene, or the path of a scene file) with the SUNDIALS oracle, as
+    `gamephysics oracle` does (method: cvode-adams, cvode-bdf or arkode-erk; rtol, atol its
+    tolerances), into the same Trajectory as simulate, at the same output instants: the reference
+    to measure a simulation's error against (docs/oracle.md). Raises InputError for bad input,
+    ValueError (a std::domain_error) when the scene leaves the oracle's domain."""
+    overrides = dict(duration=duration, output_dt=output_dt)
+    if not isinstance(scene, Scene):
+        scene = load_scene(os.fspath(scene), **overrides)
+    elif any(value is not None for value in overrides.values()):
+        scene = load_scene(scene.path, **overrides)
+    return Trajectory(*_oracle(scene, method, rtol, atol))

@@ -134,3 +134,7 @@ class Trajectory:
 def simulate(scene: Union[Scene, str, os.PathLike[str]], integrator: Optional[str] = ...,
              dt: Optional[float] = ..., duration: Optional[float] = ...,
              output_dt: Optional[float] = ...) -> Trajectory: ...
+
+def oracle(scene: Union[Scene, str, os.PathLike[str]], method: str = ..., rtol: float = ...,
+           atol: float = ..., duration: Optional[float] = ...,
+           output_dt: Optional[float] = ...) -> Trajectory: ...

@@ -79,3 +79,43 @@ def test_a_bad_option_raises_as_on_the_command_line(root):
         gp.simulate(str(root / "scenes/projectile.json"), integrator="euler")
     with pytest.raises(gp.InputError, match=r"dt: must be > 0"):
         gp.simulate(gp.load_scene(str(root / "scenes/projectile.json")), dt=-1.0)
+
+
+@pytest.mark.parametrize("restitution", [0.5, 0.8])
+def test_the_oracle_bounces_at_the_closed_form_times(tmp_path, restitution):
+    run = gp.oracle(ball_scene(tmp_path / "ball.json", restitution), duration=2.5)
+    t1 = math.sqrt(2 * 9.5 / G)
+    v1 = G * t1
+    t2 = t1 + 2 * restitution * v1 / G
+    t = run.t
+    y = run["ball"].y
+    # Free fall, then the first rebound: the oracle is exact to its tolerance, 1e-12 here.
+    before = t < t1
+    between = (t > t1) & (t < t2)
+    assert np.max(np.abs(y[before] - (10 - 0.5 * G * t[before] ** 2))) < 1e-9
+    expected = 0.5 + restitution * v1 * (t[between] - t1) - 0.5 * G * (t[between] - t1) ** 2
+    assert np.max(np.abs(y[between] - expected)) < 1e-9
+    assert run.states.shape == (len(t), 2, 6)
+
+
+def test_the_oracle_and_simulate_share_their_instants_and_agree(tmp_path):
+    path = ball_scene(tmp_path / "ball.json", 0.8)
+    game = gp.simulate(path, duration=1.0)
+    reference = gp.oracle(path, duration=1.0, method="arkode-erk")
+    np.testing.assert_array_equal(game.t, reference.t)
+    # Free fall only (the first impact is at 1.39 s): velocity Verlet is exact under gravity.
+    assert np.max(np.abs(game["ball"].y - reference["ball"].y)) < 1e-9
+
+
+def test_the_oracle_refuses_a_scene_outside_its_domain(tmp_path):
+    scene = json.loads(open(ball_scene(tmp_path / "ball.json", 0.5)).read())
+    for body in scene["bodies"]:
+        for shape in body["shapes"]:
+            shape["friction"] = 0.5
+    scene["bodies"][1]["velocity"] = [1, 0]
+    path = tmp_path / "skid.json"
+    path.write_text(json.dumps(scene))
+    with pytest.raises(ValueError, match="friction while sliding"):
+        gp.oracle(str(path))
+    with pytest.raises(gp.InputError, match="method"):
+        gp.oracle(str(path), method="euler")
