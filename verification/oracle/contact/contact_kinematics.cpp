@@ -96,4 +96,14 @@ ContactKinematics contact_kinematics(const ActiveContact& c, const Motion& first
   return k;
 }
 
+std::vector<ContactKinematics> kinematics_of(std::span<const ActiveContact> contacts,
+                                             std::span<const Motion> motions) {
+  std::vector<ContactKinematics> k;
+  k.reserve(contacts.size());
+  for (const ActiveContact& c : contacts) {
+    k.push_back(contact_kinematics(c, motions[c.first], motions[c.second]));
+  }
+  return k;
+}
+
 }  // namespace gp::oracle

@@ -6,6 +6,8 @@
 // forces, the impulses and the projection onto the constraints.
 
 #include <Eigen/Core>
+#include <span>
+#include <vector>
 
 #include "verification/oracle/contact/active_contact.hpp"
 #include "verification/oracle/model/rigid_body.hpp"
@@ -41,5 +43,9 @@ struct ContactKinematics {
 /// the centripetal and Coriolis terms of the turning bodies and of the normal.
 ContactKinematics contact_kinematics(const ActiveContact& contact, const Motion& first,
                                      const Motion& second);
+
+/// The kinematics of each of `contacts`, its bodies at `motions` (every body's).
+std::vector<ContactKinematics> kinematics_of(std::span<const ActiveContact> contacts,
+                                             std::span<const Motion> motions);
 
 }  // namespace gp::oracle

@@ -33,15 +33,6 @@ void least_change(const World& world, const std::vector<BodyPairVector>& rows,
   for (Eigen::Index k = 0; k < n; ++k) add_response(world, rows[k], lambda[k], linear, angular);
 }
 
-std::vector<ContactKinematics> kinematics_of(std::span<const ActiveContact> contacts,
-                                             std::span<const Motion> motions) {
-  std::vector<ContactKinematics> k;
-  for (const ActiveContact& c : contacts) {
-    k.push_back(contact_kinematics(c, motions[c.first], motions[c.second]));
-  }
-  return k;
-}
-
 }  // namespace
 
 double project_positions(const World& world, std::span<const ActiveContact> contacts,

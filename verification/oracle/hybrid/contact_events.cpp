@@ -21,15 +21,6 @@ Pose pose_of(const Motion& m) {
   return {m.position, m.angle};
 }
 
-std::vector<ContactKinematics> kinematics_of(std::span<const ActiveContact> contacts,
-                                             std::span<const Motion> motions) {
-  std::vector<ContactKinematics> k;
-  for (const ActiveContact& c : contacts) {
-    k.push_back(contact_kinematics(c, motions[c.first], motions[c.second]));
-  }
-  return k;
-}
-
 }  // namespace
 
 ContactEvents::ContactEvents(HybridSystem& system, const EventWatch& watch,

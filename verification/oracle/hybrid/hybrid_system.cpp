@@ -23,10 +23,7 @@ void HybridSystem::complete(double t, Snapshot& out) const {
   out.linear.assign(out.motions.size(), Vec2::Zero());
   out.angular.assign(out.motions.size(), 0.0);
   applied_accelerations(world_, out.motions, out.linear, out.angular);
-  out.kinematics.clear();
-  for (const ActiveContact& c : contacts_) {
-    out.kinematics.push_back(contact_kinematics(c, out.motions[c.first], out.motions[c.second]));
-  }
+  out.kinematics = kinematics_of(contacts_, out.motions);
   out.forces = solve_contact_forces(world_, contacts_, out.kinematics, out.linear, out.angular);
 }
 
