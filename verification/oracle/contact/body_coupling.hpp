@@ -25,6 +25,18 @@ inline BodyPairVector along(const ActiveContact& contact, const ContactRow& row)
   return {contact.first, contact.second, row.first, row.second};
 }
 
+/// What the normal force of `contact` pushes along: its normal row, carrying the friction
+/// f_t = −μ f_n sign(s) of a sliding contact.
+inline BodyPairVector normal_push(const ActiveContact& contact, const ContactKinematics& k) {
+  BodyPairVector push = along(contact, k.normal_row);
+  if (contact.mode == ContactMode::Sliding) {
+    const double share = contact.friction * contact.slip_sign;
+    push.on_first -= share * k.tangent_row.first;
+    push.on_second -= share * k.tangent_row.second;
+  }
+  return push;
+}
+
 /// row · M⁻¹ column [1/kg]: the rate at which `row` changes per unit of force along `column`.
 double coupling(const World& world, const BodyPairVector& row, const BodyPairVector& column);
 

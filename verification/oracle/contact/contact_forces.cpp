@@ -24,15 +24,8 @@ std::vector<Unknown> unknowns_of(std::span<const ActiveContact> contacts,
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ActiveContact& c = contacts[i];
     const ContactKinematics& k = kinematics[i];
-    BodyPairVector normal = along(c, k.normal_row);
-    BodyPairVector push = normal;
-    if (c.mode == ContactMode::Sliding) {
-      // f_t = −μ f_n sign(s): the normal force's unknown carries its friction.
-      const BodyPairVector t = along(c, k.tangent_row);
-      push.on_first -= c.friction * c.slip_sign * t.on_first;
-      push.on_second -= c.friction * c.slip_sign * t.on_second;
-    }
-    unknowns.push_back({push, normal, k.normal_row.bias, i, false});
+    // A sliding contact's normal force carries its friction.
+    unknowns.push_back({normal_push(c, k), along(c, k.normal_row), k.normal_row.bias, i, false});
     if (c.mode == ContactMode::Sticking) {
       const BodyPairVector t = along(c, k.tangent_row);
       unknowns.push_back({t, t, k.tangent_row.bias, i, true});

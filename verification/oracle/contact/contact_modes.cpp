@@ -52,12 +52,7 @@ bool choose_contact_modes(const World& world, std::vector<ActiveContact>& contac
     const ActiveContact& c = contacts[i];
     normal[i] = along(c, kinematics[i].normal_row);
     tangent[i] = along(c, kinematics[i].tangent_row);
-    BodyPairVector p = normal[i];
-    if (c.mode == ContactMode::Sliding) {
-      p.on_first -= c.friction * c.slip_sign * tangent[i].on_first;
-      p.on_second -= c.friction * c.slip_sign * tangent[i].on_second;
-    }
-    push[slots[i].normal] = p;
+    push[slots[i].normal] = normal_push(c, kinematics[i]);
     if (slots[i].plus >= 0) {
       push[slots[i].plus] = tangent[i];
       BodyPairVector minus = tangent[i];
