@@ -16,8 +16,11 @@ install(TARGETS gamephysics gamephysics_scene gamephysics_models EXPORT gamephys
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${GP_INSTALL_INCLUDEDIR})
 install(TARGETS gamephysics_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/engine ${PROJECT_SOURCE_DIR}/src/scene
-                  ${PROJECT_SOURCE_DIR}/src/gamephysics
+# Of the engine, only the public API (tests/api/public_headers.txt lists the same headers).
+file(STRINGS ${PROJECT_SOURCE_DIR}/tests/api/public_headers.txt GP_PUBLIC_ENGINE_HEADERS)
+list(TRANSFORM GP_PUBLIC_ENGINE_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/)
+install(FILES ${GP_PUBLIC_ENGINE_HEADERS} DESTINATION ${GP_INSTALL_INCLUDEDIR}/engine)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/scene ${PROJECT_SOURCE_DIR}/src/gamephysics
                   ${PROJECT_SOURCE_DIR}/models/include/gamephysics
         DESTINATION ${GP_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 

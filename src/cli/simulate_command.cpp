@@ -21,11 +21,17 @@ void explain(const std::string& file, const Scene& scene, const Space& space) {
             << OutputTimes(scene.duration, scene.output_dt).size() << " output instants from 0 to "
             << scene.duration << " s):\n";
   int number = 0;
+  std::string skipped;
   for (const PipelineStage& stage : space.pipeline()) {
+    if (!stage.needed) {
+      skipped += (skipped.empty() ? "" : ", ") + stage.name;
+      continue;
+    }
     std::cout << "  " << ++number << ". " << stage.name;
     if (!stage.srs_ids.empty()) std::cout << "  [" << stage.srs_ids << "]";
-    std::cout << "\n     " << stage.description << "\n";
+    std::cout << "  (" << stage.passes << ")\n     " << stage.description << "\n";
   }
+  if (!skipped.empty()) std::cout << "  not needed by this scene, skipped: " << skipped << "\n";
 }
 
 }  // namespace

@@ -8,9 +8,11 @@
 namespace gp {
 
 struct PipelineStage {
-  std::string name;         ///< e.g. "uniform gravity"
-  std::string srs_ids;      ///< e.g. "IM:transMot GD:accelGravity"
+  std::string name;         ///< e.g. "narrowphase: contact manifolds"
+  std::string srs_ids;      ///< e.g. "FR:Determine-Collisions A:collisionType"
   std::string description;  ///< what it does for this scene
+  std::string passes;       ///< "local step", "sub-steps" or both: how the step runs it
+  bool needed = true;       ///< false: this scene does not need it, and the step skips it
 };
 
 }  // namespace gp

@@ -13,15 +13,15 @@
 
 using gp::Aabb;
 using gp::BroadphaseProxy;
-using gp::ProxyPair;
+using gp::ShapePair;
 using gp::Vec2;
 
 namespace {
 
 /// Every pair the broadphase should report, by testing all N² / 2 pairs.
-std::vector<ProxyPair> all_overlapping_pairs(const std::vector<BroadphaseProxy>& proxies,
+std::vector<ShapePair> all_overlapping_pairs(const std::vector<BroadphaseProxy>& proxies,
                                              double margin) {
-  std::vector<ProxyPair> pairs;
+  std::vector<ShapePair> pairs;
   for (std::size_t i = 0; i < proxies.size(); ++i) {
     for (std::size_t j = i + 1; j < proxies.size(); ++j) {
       if (proxies[i].is_static && proxies[j].is_static) continue;
@@ -36,14 +36,14 @@ std::vector<ProxyPair> all_overlapping_pairs(const std::vector<BroadphaseProxy>&
   return pairs;
 }
 
-std::vector<ProxyPair> sorted(std::vector<ProxyPair> pairs) {
+std::vector<ShapePair> sorted(std::vector<ShapePair> pairs) {
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
 
-std::vector<ProxyPair> pairs_found(gp::SweepAndPrune& broadphase,
+std::vector<ShapePair> pairs_found(gp::SweepAndPrune& broadphase,
                                    const std::vector<BroadphaseProxy>& proxies) {
-  std::vector<ProxyPair> pairs;
+  std::vector<ShapePair> pairs;
   broadphase.find_pairs(proxies, pairs);
   return pairs;
 }
@@ -80,8 +80,8 @@ TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 ran
   const double margin = 0.1;
   gp::SweepAndPrune broadphase(margin);
 
-  const std::vector<ProxyPair> first = sorted(pairs_found(broadphase, proxies));
-  const std::vector<ProxyPair> expected = all_overlapping_pairs(proxies, margin);
+  const std::vector<ShapePair> first = sorted(pairs_found(broadphase, proxies));
+  const std::vector<ShapePair> expected = all_overlapping_pairs(proxies, margin);
   CHECK(expected.size() > 100);  // the scene does have overlaps to find
   CHECK(first == expected);
   CHECK(std::adjacent_find(first.begin(), first.end()) == first.end());  // each pair once
@@ -152,7 +152,7 @@ TEST_CASE("Sweep and prune kept from step to step finds the pairs of all-pairs t
       const double breathing = 1.0 + 0.5 * std::sin(0.1 * step + i);
       proxies.push_back(box_proxy(m.center, {m.size.x(), breathing * m.size.y()}, m.is_static));
     }
-    const std::vector<ProxyPair> found = sorted(pairs_found(broadphase, proxies));
+    const std::vector<ShapePair> found = sorted(pairs_found(broadphase, proxies));
     INFO("step " << step);
     REQUIRE(found == all_overlapping_pairs(proxies, margin));
     if (broadphase.entries_resorted() < proxies.size() / 4) ++repaired_steps;
@@ -186,7 +186,7 @@ TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Coll
     proxies.push_back(box_proxy({0.01 * (level % 3), 0.5 + level}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair> pairs = sorted(pairs_found(broadphase, proxies));
+  const std::vector<ShapePair> pairs = sorted(pairs_found(broadphase, proxies));
   CHECK(broadphase.candidates_tested() < 4 * proxies.size());
   CHECK(pairs.size() == 200);  // each box touches the one below it (touching counts)
   CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
@@ -210,7 +210,7 @@ TEST_CASE("A huge box makes no more band entries than there are boxes",
     proxies.push_back(box_proxy({1.5 * i, 2.0 * (i % 7)}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair> pairs = sorted(pairs_found(broadphase, proxies));
+  const std::vector<ShapePair> pairs = sorted(pairs_found(broadphase, proxies));
   CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
   CHECK(broadphase.candidates_tested() < 2 * proxies.size());
 }
@@ -221,9 +221,9 @@ TEST_CASE("Two static proxies are never paired", "[FR:Determine-Collisions]") {
     proxies.push_back(box_proxy({0.1 * i, 0.0}, {2.0, 2.0}, i % 2 == 0));
   }
   gp::SweepAndPrune broadphase(0.0);
-  const std::vector<ProxyPair>& pairs = pairs_found(broadphase, proxies);
+  const std::vector<ShapePair>& pairs = pairs_found(broadphase, proxies);
   CHECK_FALSE(pairs.empty());
-  for (const ProxyPair& pair : pairs) {
+  for (const ShapePair& pair : pairs) {
     CHECK_FALSE((proxies[pair.first].is_static && proxies[pair.second].is_static));
   }
   for (BroadphaseProxy& proxy : proxies) proxy.is_static = true;
@@ -235,7 +235,7 @@ TEST_CASE("Boxes apart by up to the margin are paired", "[FR:Determine-Collision
                                              box_proxy({1.09, 0.3}, {1.0, 1.0}, false)};
   gp::SweepAndPrune wide(0.1);
   REQUIRE(pairs_found(wide, proxies).size() == 1);
-  CHECK(pairs_found(wide, proxies)[0] == ProxyPair{0, 1});
+  CHECK(pairs_found(wide, proxies)[0] == ShapePair{0, 1});
   gp::SweepAndPrune narrow(0.08);
   CHECK(pairs_found(narrow, proxies).empty());
 }
@@ -247,9 +247,9 @@ TEST_CASE("A warmed-up sweep and prune reuses the pair buffer it is given",
     proxies.push_back(box_proxy({0.9 * i, 0.0}, {1.0, 1.0}, false));
   }
   gp::SweepAndPrune broadphase(0.0);
-  std::vector<ProxyPair> pairs;
+  std::vector<ShapePair> pairs;
   broadphase.find_pairs(proxies, pairs);
-  const ProxyPair* buffer = pairs.data();
+  const ShapePair* buffer = pairs.data();
   const std::size_t capacity = pairs.capacity();
   for (BroadphaseProxy& proxy : proxies) proxy.bounds.min.y() += 0.01;
   broadphase.find_pairs(proxies, pairs);
@@ -267,7 +267,7 @@ TEST_CASE("Boxes reaching the largest doubles are paired without overflow",
                                              {Aabb{{5.0, 0.0}, {6.0, 1.0}}, false}};
   gp::SweepAndPrune broadphase(0.0);
   CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.0));
-  CHECK(all_overlapping_pairs(proxies, 0.0) == std::vector<ProxyPair>{{0, 1}});
+  CHECK(all_overlapping_pairs(proxies, 0.0) == std::vector<ShapePair>{{0, 1}});
 }
 
 TEST_CASE("A non-finite box, from a state about to be reported non-finite, is paired with none",

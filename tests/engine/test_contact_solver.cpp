@@ -3,9 +3,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "engine/contacts/collision_detection.hpp"
-#include "engine/contacts/contact_solver.hpp"
+#include "engine/collision/collision_detection.hpp"
 #include "engine/geometry/transform.hpp"
+#include "engine/solver/position_passes.hpp"
+#include "engine/solver/velocity_passes.hpp"
 
 namespace {
 
@@ -149,8 +150,8 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
   gp::append_contact({1, 0}, shapes, m, s, contacts);
   contacts.points(contacts[0])[0].normal_mass = 1.0;
   s.angle[1] = turn;
-  gp::RotationCache rotations;
-  gp::correct_positions(contacts, shapes, inertia, detected_angle, 1, 0.0, s, rotations);
+  gp::PositionCorrection passes;
+  passes.correct(contacts, shapes, inertia, detected_angle, {1, 0.0}, s);
   return s.position[1].y() + arm.y() + depth;
 }
 

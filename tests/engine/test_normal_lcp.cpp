@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <random>
 
-#include "engine/contacts/normal_lcp.hpp"
+#include "engine/solver/normal_lcp.hpp"
 
 namespace {
 

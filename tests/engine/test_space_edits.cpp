@@ -184,9 +184,9 @@ TEST_CASE("A removed body no longer collides: what rested on it falls freely",
   space.remove_body(block);
   CHECK(space.removed(block));
   CHECK_FALSE(space.find_body("block"));
-  for (const gp::Contact& c : space.contacts()) {
-    CHECK(c.body_a != block);
-    CHECK(c.body_b != block);
+  for (const gp::ContactPointReport& p : space.contact_points()) {
+    CHECK(p.body_a != block);
+    CHECK(p.body_b != block);
   }
   // Free fall for 0.3 s (to y0 − 0.44 m, above the ground at 0.5 m), with nothing left to push it.
   for (int k = 0; k < 18; ++k) space.step(1.0 / 60);
@@ -229,7 +229,7 @@ TEST_CASE("Removing a body that touches nothing leaves the others' run exactly a
     CHECK(kept.state(j).velocity == removed.state(j).velocity);
   }
   CHECK(removed.find_body("ball") == gp::BodyId{3});
-  CHECK(kept.contacts().size() == removed.contacts().size());
+  CHECK(kept.contact_points().size() == removed.contact_points().size());
 }
 
 TEST_CASE("Removing the only moving body stops all collision work", "[FR:Determine-Collisions]") {
@@ -238,9 +238,9 @@ TEST_CASE("Removing the only moving body stops all collision work", "[FR:Determi
   const auto ball = space.add_body(disc("ball", {0.0, 0.5}));
   const auto point = space.add_body(point_mass());
   space.step(0.01);
-  REQUIRE_FALSE(space.contacts().empty());
+  REQUIRE_FALSE(space.contact_points().empty());
   space.remove_body(ball);
-  CHECK(space.contacts().empty());
+  CHECK(space.contact_points().empty());
   space.step(0.5);
   // The point mass falls on: ½ g t² over 0.51 s.
   CHECK_THAT(space.state(point).position.y(), WithinAbs(-0.5 * g * 0.51 * 0.51, 1e-12));

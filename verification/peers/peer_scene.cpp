@@ -2,6 +2,7 @@
 
 #include "engine/scene/scene_space.hpp"
 #include "engine/setup/mass_setup.hpp"
+#include "engine/space_impl.hpp"
 
 namespace gp::peers {
 
@@ -29,7 +30,7 @@ PeerScene peer_scene(const Scene& scene) {
     }
     peer.bodies.push_back(std::move(body));
   }
-  const BodyShapes& shapes = space->shapes();
+  const BodyShapes& shapes = SpaceInternals::context(*space).shapes;
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const ShapeRecord& r = shapes[i];
     peer.bodies[r.body].shapes.push_back({Shape::copy_of(r.local), r.restitution, r.friction});

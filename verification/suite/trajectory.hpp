@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/body_state.hpp"
-#include "engine/contacts/impacts.hpp"
+#include "engine/core.hpp"
+#include "engine/impacts/impacts.hpp"
 #include "scene/body.hpp"
 #include "scene/scene.hpp"
 #include "scene/settings.hpp"

@@ -12,15 +12,10 @@ Frame frame_of(const Space& space, double t) {
     f.states.push_back(space.state(body));
     f.quantities.push_back(body_quantities(space, body));
   }
-  for (const Contact& c : space.contacts()) {
-    const Vec2 position_a = space.state(c.body_a).position;
-    for (const ContactPointState& p : space.contacts().points(c)) {
-      // Speculative points that never closed carry no impulse and are not contacts to show.
-      if (p.normal_impulse <= 0.0) continue;
-      // The point as it was found, carried along with A since.
-      f.contacts.push_back(
-          {c.body_a, c.body_b, position_a + arm_a(c, p), c.normal, p.normal_impulse});
-    }
+  for (const ContactPointReport& p : space.contact_points()) {
+    // Speculative points that never closed carry no impulse and are not contacts to show.
+    if (p.normal_impulse <= 0.0) continue;
+    f.contacts.push_back({p.body_a, p.body_b, p.point, p.normal, p.normal_impulse});
   }
   return f;
 }

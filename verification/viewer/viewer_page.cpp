@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "engine/space_impl.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
 #include "scene/settings.hpp"
 #include "verification/html/html_escape.hpp"
@@ -65,7 +66,7 @@ json bodies_json(const Space& space) {
                       {"shapes", json::array()}});
   }
   // The shapes in their body's frame centred on the centre of mass, as the engine holds them.
-  const BodyShapes& shapes = space.shapes();
+  const BodyShapes& shapes = SpaceInternals::context(space).shapes;
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     json shape = shape_json(Shape::copy_of(shapes[i].local));
     shape["restitution"] = shapes[i].restitution;

@@ -11,7 +11,7 @@
 namespace gp {
 
 template <BroadphaseBoxes Boxes>
-void SweepAndPrune::find_pairs(const Boxes& boxes, std::vector<ProxyPair>& pairs) {
+void SweepAndPrune::find_pairs(const Boxes& boxes, std::vector<ShapePair>& pairs) {
   pairs.clear();
   candidates_tested_ = 0;
   entries_resorted_ = 0;
@@ -212,7 +212,7 @@ void SweepAndPrune::sort_entries() {
   }
 }
 
-void SweepAndPrune::sweep(std::vector<ProxyPair>& pairs) {
+void SweepAndPrune::sweep(std::vector<ShapePair>& pairs) {
   // The entries and the count in locals: pairs growing might, for all the compiler knows, change
   // the members, which it would then reload at every candidate.
   const std::span<const Entry> entries(entries_);
@@ -241,7 +241,7 @@ void SweepAndPrune::forget() {
   band_height_ = 0.0;
 }
 
-template void SweepAndPrune::find_pairs(const ProxyBoxes&, std::vector<ProxyPair>&);
-template void SweepAndPrune::find_pairs(const SweptBoxes&, std::vector<ProxyPair>&);
+template void SweepAndPrune::find_pairs(const ProxyBoxes&, std::vector<ShapePair>&);
+template void SweepAndPrune::find_pairs(const SweptBoxes&, std::vector<ShapePair>&);
 
 }  // namespace gp

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/collision/shape_pair.hpp"
 #include "engine/geometry/aabb.hpp"
 
 namespace gp {
@@ -39,14 +40,6 @@ struct ProxyBoxes {
   bool is_static(std::uint32_t i) const { return proxies[i].is_static; }
 };
 
-/// The indices of two boxes that overlap, first < second.
-struct ProxyPair {
-  std::uint32_t first;
-  std::uint32_t second;
-
-  auto operator<=>(const ProxyPair&) const = default;
-};
-
 /// Sweep and prune in horizontal bands. Plain sweep and prune sorts the boxes along x and tests
 /// each only against those whose x intervals overlap its own; in a scene spread in both
 /// directions that is about √N boxes each, N√N in all. Cutting the plane into bands about two
@@ -72,8 +65,8 @@ class SweepAndPrune {
   /// Fastest when each box keeps its index from call to call. Instantiated in broadphase.cpp for
   /// ProxyBoxes and SweptBoxes.
   template <BroadphaseBoxes Boxes>
-  void find_pairs(const Boxes& boxes, std::vector<ProxyPair>& pairs);
-  void find_pairs(std::span<const BroadphaseProxy> proxies, std::vector<ProxyPair>& pairs) {
+  void find_pairs(const Boxes& boxes, std::vector<ShapePair>& pairs);
+  void find_pairs(std::span<const BroadphaseProxy> proxies, std::vector<ShapePair>& pairs) {
     find_pairs(ProxyBoxes{proxies}, pairs);
   }
 
@@ -171,7 +164,7 @@ class SweepAndPrune {
   void build_entries(const Boxes& boxes, std::int64_t last_band);
   /// Restores the order of the entries kept from the last call, then merges in those added.
   void sort_entries();
-  void sweep(std::vector<ProxyPair>& pairs);
+  void sweep(std::vector<ShapePair>& pairs);
   /// The entry in `band` of box `i`, grown to `grown`, whose bands are `bands`.
   static Entry entry(const Aabb& grown, std::int32_t band, std::uint32_t i, const BandRange& bands,
                      bool is_static) {

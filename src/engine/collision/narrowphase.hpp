@@ -1,7 +1,7 @@
 #pragma once
 // Exact contact between two placed shapes (FR:Determine-Collisions).
 
-#include "engine/collision/contact.hpp"
+#include "engine/collision/manifold.hpp"
 #include "engine/geometry/world_shape.hpp"
 
 namespace gp {

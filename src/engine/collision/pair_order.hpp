@@ -15,11 +15,11 @@ class PairOrder {
  public:
   /// Sorts `pairs`, whose ids are all below `id_bound`, ascending. Allocates nothing once its
   /// buffers have grown to the scene.
-  void sort(std::vector<ProxyPair>& pairs, std::uint32_t id_bound);
+  void sort(std::vector<ShapePair>& pairs, std::uint32_t id_bound);
 
  private:
   std::vector<std::uint32_t> starts_;  // per id: where its pairs start in the output
-  std::vector<ProxyPair> scratch_;
+  std::vector<ShapePair> scratch_;
 };
 
 }  // namespace gp

@@ -5,21 +5,15 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
 
-#include "engine/body_state.hpp"
-#include "engine/dynamics/motion_state.hpp"
+#include "engine/core.hpp"
+#include "engine/force_callback.hpp"
 #include "scene/settings.hpp"
 
 namespace gp {
-
-using BodyId = std::uint32_t;
-
-/// F_j(t), τ_j(t) of one body, given the time [s] and the body's state at that time.
-using ForceCallback = std::function<Wrench(double t, BodyId body, const BodyState& state)>;
 
 /// What a dynamic body is pushed by; fixed when the body is added, except callbacks.
 struct BodyForces {

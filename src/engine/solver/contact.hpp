@@ -3,15 +3,15 @@
 
 #include <cstdint>
 
-#include "engine/collision/broadphase.hpp"
-#include "engine/collision/contact.hpp"
-#include "engine/dynamics/force_model.hpp"
+#include "engine/collision/manifold.hpp"
+#include "engine/collision/shape_pair.hpp"
+#include "engine/core.hpp"
 #include "gamephysics/models/dd/torque.hpp"
 
 namespace gp {
 
 /// The key of the contact a pair of shapes makes (Contact::key).
-inline std::uint64_t key_of(const ProxyPair& pair) {
+inline std::uint64_t contact_key(const ShapePair& pair) {
   return (std::uint64_t{pair.first} << 32) | pair.second;
 }
 
@@ -105,7 +105,7 @@ struct Contact {
   /// Of points: 1 or 2.
   int count() const { return block == kNoBlock ? 1 : 2; }
   /// Orders contacts, and so matches them from step to step, by their pair of shapes.
-  std::uint64_t key() const { return key_of({shape_a, shape_b}); }
+  std::uint64_t key() const { return contact_key({shape_a, shape_b}); }
 };
 
 /// The arm [m] from A's centre of mass to point `p` of `c`.

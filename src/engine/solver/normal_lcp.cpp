@@ -1,4 +1,4 @@
-#include "engine/contacts/normal_lcp.hpp"
+#include "engine/solver/normal_lcp.hpp"
 
 #include <algorithm>
 

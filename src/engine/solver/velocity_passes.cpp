@@ -1,4 +1,4 @@
-#include "engine/contacts/contact_solver.hpp"
+#include "engine/solver/velocity_passes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,31 +24,11 @@ double effective_mass(const BodyInertia& m, const Contact& c, const Vec2& arm_a,
                                m.inverse_moment[c.body_b], arm_a, arm_b);
 }
 
-// The angles [rad] by which displace() turned A and B.
-struct Turns {
-  double a;
-  double b;
-};
-
-// Moves A by the positional impulse `shift` [kg·m] and B by the reaction, and turns each by the
-// moment of its share about its centre of mass [kg·m²] (DD:impulseV, DD:torque,
-// TM:NewtonThirdLawMot applied to displacements instead of velocities).
-Turns displace(const BodyInertia& m, const Contact& c, const Vec2& shift, double moment_a,
-               double moment_b, MotionState& s) {
-  const Vec2 back = tm::reaction_force(shift);
-  const Turns turns{moment_a * m.inverse_moment[c.body_a], moment_b * m.inverse_moment[c.body_b]};
-  s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
-  s.angle[c.body_a] = dd::rotated_orientation(s.angle[c.body_a], turns.a);
-  s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
-  s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b], turns.b);
-  return turns;
-}
-
-// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m]
-// (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
-double velocity_along(const Vec2& velocity_a, double angular_velocity_a, const Vec2& velocity_b,
+// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m],
+// from the bodies' relative velocity v_A − v_B (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
+double velocity_along(const Vec2& relative_velocity, double angular_velocity_a,
                       double angular_velocity_b, const Vec2& d, double arm_a, double arm_b) {
-  return (velocity_a - velocity_b).dot(d) + angular_velocity_a * arm_a - angular_velocity_b * arm_b;
+  return relative_velocity.dot(d) + angular_velocity_a * arm_a - angular_velocity_b * arm_b;
 }
 
 // The velocities and inverse inertias of a contact's two bodies, copied out of the state arrays
@@ -77,7 +57,7 @@ struct PairMotion {
   }
 
   double velocity_along(const Vec2& d, double arm_a, double arm_b) const {
-    return gp::velocity_along(velocity_a, angular_velocity_a, velocity_b, angular_velocity_b, d,
+    return gp::velocity_along(velocity_a - velocity_b, angular_velocity_a, angular_velocity_b, d,
                               arm_a, arm_b);
   }
   double normal_velocity(const Contact& c, const ContactPointState& p) const {
@@ -119,7 +99,7 @@ double normal_coupling(const Contact& ci, const ContactPointState& pi, const Con
 }
 
 double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
-  return velocity_along(s.velocity[c.body_a], s.angular_velocity[c.body_a], s.velocity[c.body_b],
+  return velocity_along(s.velocity[c.body_a] - s.velocity[c.body_b], s.angular_velocity[c.body_a],
                         s.angular_velocity[c.body_b], c.normal, p.normal_arm_a, p.normal_arm_b);
 }
 
@@ -307,12 +287,8 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
   }
 }
 
-namespace {
-
-// One pass over `c` (solve_contact) on the velocities of `s`; returns the largest change it made
-// to its two bodies' velocities [m/s].
-double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
-                  MotionState& s) {
+double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
+                          MotionState& s) {
   PairMotion m(c, inertia, s);
   const std::span<ContactPointState> points = contacts.points(c);
   const double impulse_change = c.count() == 1 ? solve_contact(contacts, c, points.first<1>(), m)
@@ -321,27 +297,12 @@ double solve_once(ContactSet& contacts, const Contact& c, const BodyInertia& ine
   return impulse_change * (m.inverse_mass_a + m.inverse_mass_b);
 }
 
-// move_by_contact_impulses for one contact.
-void move_by_impulses(const ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
-                      double duration, MotionState& s) {
-  for (const ContactPointState& p : contacts.points(c)) {
-    const double normal = duration * p.normal_impulse;
-    const double tangent = duration * p.tangent_impulse;
-    // The moment of j_n n + j_t t at arm r is j_n (r × n) + j_t (r × t) (DD:torque).
-    displace(inertia, c, normal * c.normal + tangent * contact_tangent(c.normal),
-             normal * p.normal_arm_a + tangent * p.tangent_arm_a,
-             -(normal * p.normal_arm_b + tangent * p.tangent_arm_b), s);
-  }
-}
-
-}  // namespace
-
 int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s) {
   for (int i = 0; i < iterations;) {
     double largest_change = 0.0;
     for (const Contact& c : contacts)
-      largest_change = std::max(largest_change, solve_once(contacts, c, inertia, s));
+      largest_change = std::max(largest_change, solve_contact_once(contacts, c, inertia, s));
     ++i;
     // A pass that changed the velocities by at most the tolerance leaves the next about as
     // little to do (none at all when it changed nothing).
@@ -366,130 +327,6 @@ void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionS
       p.normal_impulse = total;
     }
     m.store(c, s);
-  }
-}
-
-void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
-                              double duration, MotionState& s) {
-  for (const Contact& c : contacts) move_by_impulses(contacts, c, inertia, duration, s);
-}
-
-void solve_speculative(ContactSet& resting, ContactSet& speculative, const BodyShapes& shapes,
-                       const BodyInertia& inertia, const MotionState& before, double h,
-                       const Settings& settings, MotionState& s, SpeculativeScratch& scratch) {
-  // An impact's impulse fades as it spreads through a heap: the resting contacts up to this many
-  // contacts away from it are solved with it, the rest of the heap holds still for it.
-  constexpr int kReach = 2;
-  scratch.reached.assign(s.position.size(), 0);
-  scratch.included.assign(resting.size(), 0);
-  scratch.nearby.clear();
-  for (const Contact& c : speculative) {
-    scratch.reached[c.body_a] = inertia.inverse_mass[c.body_a] > 0.0;
-    scratch.reached[c.body_b] = inertia.inverse_mass[c.body_b] > 0.0;
-  }
-  for (int level = 0; level < kReach; ++level) {
-    scratch.newly.clear();
-    for (std::size_t i = 0; i < resting.size(); ++i) {
-      const Contact& c = resting[i];
-      if (scratch.included[i] || !(scratch.reached[c.body_a] || scratch.reached[c.body_b]))
-        continue;
-      scratch.included[i] = 1;
-      scratch.nearby.push_back(i);
-      for (BodyId b : {c.body_a, c.body_b}) {
-        if (inertia.inverse_mass[b] > 0.0) scratch.newly.push_back(b);
-      }
-    }
-    for (BodyId b : scratch.newly) scratch.reached[b] = 1;
-  }
-  // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
-  // impulses so far, and give h × their final impulses at the end.
-  for (std::size_t i : scratch.nearby) move_by_impulses(resting, resting[i], inertia, -h, s);
-  prepare_contacts(speculative, shapes, inertia, before, h, settings);
-  for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
-    for (std::size_t i : scratch.nearby) solve_once(resting, resting[i], inertia, s);
-    for (const Contact& c : speculative) solve_once(speculative, c, inertia, s);
-  }
-  apply_restitution(speculative, inertia, s);
-  for (std::size_t i : scratch.nearby) move_by_impulses(resting, resting[i], inertia, h, s);
-  move_by_contact_impulses(speculative, inertia, h, s);
-}
-
-void RotationCache::reset(std::size_t bodies) {
-  angle_.assign(bodies, std::numeric_limits<double>::quiet_NaN());
-  rotation_.resize(bodies);
-}
-
-namespace {
-
-// The arm [m], now, from a body's centre of mass to its deepest point inside the other body at
-// detection, carried along as the body moved and turned since. `deepest` gives that arm at
-// detection (rebuilt only where needed), `outward` the unit normal away from the body, `reach` the
-// arm's component along it, and `turned` turns a vector with the body.
-template <typename Arm, typename Turned>
-Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, const Vec2& outward,
-                double reach, const Turned& turned) {
-  switch (kind) {
-    case AnchorKind::kCentredDisc:
-      // Whichever way the disc turns, its deepest point is its radius away along the normal.
-      return reach * outward;
-    case AnchorKind::kOffsetDisc: {
-      const double radius = shape.local.circle().radius;
-      return turned(deepest() - radius * outward) + radius * outward;
-    }
-    case AnchorKind::kFixed:
-      break;
-  }
-  return turned(deepest());
-}
-
-}  // namespace
-
-void correct_positions(const ContactSet& contacts, const BodyShapes& shapes,
-                       const BodyInertia& inertia, std::span<const double> detected_angle,
-                       int iterations, double slop, MotionState& s, RotationCache& rotations) {
-  constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
-  constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
-  rotations.reset(s.angle.size());
-  const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
-  const auto turned_with = [&](BodyId b) {
-    return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
-  };
-  // Passes end after one that found no point overlapping by more than two slops: what is left
-  // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
-  for (bool deep = true; deep && iterations-- > 0;) {
-    deep = false;
-    for (const Contact& c : contacts) {
-      for (const ContactPointState& p : contacts.points(c)) {
-        // Each body's deepest point inside the other at detection, half the depth from the
-        // contact point.
-        const double half_depth = 0.5 * p.depth;
-        const Vec2 arm_a = anchor_arm(
-            p.anchor_a, shapes[c.shape_a],
-            [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
-            half_depth - p.tangent_arm_a, turned_with(c.body_a));
-        const Vec2 arm_b = anchor_arm(
-            p.anchor_b, shapes[c.shape_b],
-            [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
-            p.tangent_arm_b + half_depth, turned_with(c.body_b));
-        const double separation =
-            (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
-        const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
-        if (excess == 0.0) continue;
-        deep = deep || separation < -2.0 * slop;
-        // The impulses' effective mass, applied to a displacement instead of a velocity; set up
-        // for the step's arms, which the small turns of these passes barely change.
-        const Vec2 shift = -excess * p.normal_mass * c.normal;
-        // A push along the normal through a disc's centre does not turn it: zero exactly, not
-        // by round-off, so that nothing turns it and its rotation is not looked up.
-        const auto moment = [&](AnchorKind kind, const Vec2& arm, const Vec2& push) {
-          return kind == AnchorKind::kCentredDisc ? 0.0 : dd::torque(arm, push);
-        };
-        const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, arm_a, shift),
-                                     moment(p.anchor_b, arm_b, tm::reaction_force(shift)), s);
-        rotations.turn(c.body_a, turn(c.body_a), turns.a);
-        rotations.turn(c.body_b, turn(c.body_b), turns.b);
-      }
-    }
   }
 }
 

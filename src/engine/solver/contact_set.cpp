@@ -1,4 +1,4 @@
-#include "engine/contacts/contact_set.hpp"
+#include "engine/solver/contact_set.hpp"
 
 #include "engine/capacity.hpp"
 

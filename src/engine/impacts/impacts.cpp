@@ -1,4 +1,4 @@
-#include "engine/contacts/impacts.hpp"
+#include "engine/impacts/impacts.hpp"
 
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -6,11 +6,12 @@
 #include <cstdint>
 #include <limits>
 
+#include "engine/collision/collision_detection.hpp"
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
-#include "engine/contacts/collision_detection.hpp"
 #include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/transform.hpp"
+#include "engine/step/step_context.hpp"
 #include "gamephysics/models/dd/angular_acceleration.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
@@ -58,7 +59,9 @@ namespace {
 
 // τ in (t0, h] where the shapes first touch, given their signed distances d0 at t0 and d1 at h.
 std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, double d0, double d1,
-                                  const Ballistic& motion, double t0, double h) {
+                                  const Ballistic& motion, const StepWindow& window) {
+  const double t0 = window.t0;
+  const double h = window.h;
   const auto distance = [&](double tau) {
     return signed_distance(
         to_world(a.local, Transform(motion.position(a.body, tau), motion.angle(a.body, tau))),
@@ -91,28 +94,30 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
 
 }  // namespace
 
-std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b,
-                                  const WorldShapeView& a0, const WorldShapeView& b0,
-                                  const WorldShapeView& a1, const WorldShapeView& b1,
-                                  const Ballistic& motion, double t0, double h,
-                                  const ImpactFilter& filter) {
-  const double d0 = signed_distance(a0, b0);
+std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
+                                  const StepWindow& window, const ImpactFilter& filter) {
+  const double d0 = signed_distance(a.at_t0, b.at_t0);
   if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
-  const double d1 = signed_distance(a1, b1);
-  if (d0 < filter.margin && d0 - d1 < filter.min_speed * (h - t0)) return std::nullopt;
-  return first_touch(a, b, d0, d1, motion, t0, h);
+  const double d1 = signed_distance(a.at_h, b.at_h);
+  if (d0 < filter.margin && d0 - d1 < filter.min_speed * (window.h - window.t0)) {
+    return std::nullopt;
+  }
+  return first_touch(a.shape, b.shape, d0, d1, motion, window);
 }
 
-std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs,
-                                             const BodyShapes& shapes, const WorldShapes& start,
-                                             const WorldShapes& end, const Ballistic& motion,
-                                             double h, const ImpactFilter& filter) {
+std::optional<double> ImpactSearch::earliest(const StepContext& c) {
+  const BodyShapes& shapes = c.shapes;
+  const WorldShapes& start = c.world_start;
+  const WorldShapes& end = c.world_end;
+  const double h = c.h;
+  const ImpactFilter filter = impact_filter(c.settings);
   touching_.clear();
   std::optional<double> best;
   const double same_time = simultaneity(h);
-  for (const ProxyPair& p : pairs) {
-    const auto tau = impact_time(shapes[p.first], shapes[p.second], start[p.first], start[p.second],
-                                 end[p.first], end[p.second], motion, 0.0, h, filter);
+  for (const ShapePair& p : c.pairs) {
+    const auto tau = impact_time({shapes[p.first], start[p.first], end[p.first]},
+                                 {shapes[p.second], start[p.second], end[p.second]}, *c.motion,
+                                 {0.0, h}, filter);
     if (!tau) continue;
     if (!best || *tau < *best - same_time) {
       best = tau;
@@ -124,11 +129,14 @@ std::optional<double> ImpactSearch::earliest(const std::vector<ProxyPair>& pairs
   return best;
 }
 
-void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
-                     const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
-                     ContactSet& contacts, std::vector<Impact>& log) {
+void resolve_impacts(std::span<const ShapePair> pairs, StepContext& ctx, double t, MotionState& s,
+                     ContactSet& contacts) {
+  const BodyShapes& shapes = ctx.shapes;
+  const BodyInertia& inertia = ctx.inertia;
+  const Settings& settings = ctx.settings;
+  std::vector<Impact>& log = ctx.impacts;
   contacts.clear();
-  for (const ProxyPair& p : pairs) {
+  for (const ShapePair& p : pairs) {
     const ShapeRecord& a = shapes[p.first];
     const ShapeRecord& b = shapes[p.second];
     const ContactManifold m = collide(

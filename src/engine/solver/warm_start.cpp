@@ -1,7 +1,7 @@
-#include "engine/contacts/warm_start.hpp"
+#include "engine/solver/warm_start.hpp"
 
 #include "engine/capacity.hpp"
-#include "engine/contacts/body_shapes.hpp"
+#include "engine/collision/body_shapes.hpp"
 
 namespace gp {
 
@@ -14,7 +14,7 @@ void keep_impulses(const ContactSet& contacts, std::vector<WarmStart>& kept) {
   for (const Contact& c : contacts) {
     const std::uint64_t pair = WarmStart::pair_key({c.shape_a, c.shape_b});
     for (const ContactPointState& p : contacts.points(c)) {
-      kept.push_back({WarmStart::key_of(pair, p.id.key()), p.normal_impulse, p.tangent_impulse});
+      kept.push_back({WarmStart::point_key(pair, p.id.key()), p.normal_impulse, p.tangent_impulse});
     }
   }
 }

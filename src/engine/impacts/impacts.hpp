@@ -7,26 +7,22 @@
 #include <span>
 #include <vector>
 
+#include "engine/collision/body_shapes.hpp"
 #include "engine/collision/broadphase.hpp"
-#include "engine/contacts/body_shapes.hpp"
-#include "engine/contacts/contact_solver.hpp"
 #include "engine/dynamics/force_model.hpp"
+#include "engine/impact.hpp"
+#include "engine/solver/velocity_passes.hpp"
 
 namespace gp {
 
-/// A collision resolved at its time of impact.
-struct Impact {
-  double time;  ///< t_c [s]
-  BodyId body_a;
-  BodyId body_b;
-  Vec2 normal;     ///< unit, from B towards A
-  Vec2 point;      ///< m, world (the mean of the contact points)
-  double impulse;  ///< j [N·s], the sum over the contact points
-};
+struct StepContext;
 
 /// Motion of a body over a step under its accelerations at the start of the step: exact for
 /// constant accelerations, and what the time-of-impact search follows.
 struct Ballistic {
+  Ballistic(const MotionState& from, StepAccelerations accelerations)
+      : start(from), acceleration(accelerations) {}
+
   const MotionState& start;
   StepAccelerations acceleration;
 
@@ -55,16 +51,26 @@ inline ImpactFilter impact_filter(const Settings& settings) {
   return {settings.linear_slop, settings.restitution_threshold, settings.contact_margin};
 }
 
+/// A shape with its placements at the two ends of a window of the step.
+struct SweptShape {
+  const ShapeRecord& shape;
+  const WorldShapeView& at_t0;
+  const WorldShapeView& at_h;
+};
+
+/// The part (t0, h] of a step that a search covers [s, from the start of the step].
+struct StepWindow {
+  double t0;
+  double h;
+};
+
 /// The earliest τ in (t0, h] at which shapes `a` and `b`, apart at τ = t0 (signed distance >
 /// `filter.slop`), touch while following `motion`; nothing if they do not. Pairs closer than
 /// `filter.margin` that close slower than `filter.min_speed` over the rest of the step are left
 /// to the contact solver's speculative contacts, as they bounce no more than resting contacts
-/// (restitution threshold). `a0`, `b0` and `a1`, `b1` are the shapes placed at τ = t0 and τ = h.
-std::optional<double> impact_time(const ShapeRecord& a, const ShapeRecord& b,
-                                  const WorldShapeView& a0, const WorldShapeView& b0,
-                                  const WorldShapeView& a1, const WorldShapeView& b1,
-                                  const Ballistic& motion, double t0, double h,
-                                  const ImpactFilter& filter);
+/// (restitution threshold).
+std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
+                                  const StepWindow& window, const ImpactFilter& filter);
 
 /// Impacts this close in time [s] over a step of h [s] count as simultaneous.
 inline double simultaneity(double h) {
@@ -73,25 +79,23 @@ inline double simultaneity(double h) {
 
 class ImpactSearch {
  public:
-  /// The earliest impact_time() from τ = 0 of any of `pairs`, nothing if none. `start` and
-  /// `end` are the shapes placed at τ = 0 and at τ = h along `motion`.
-  std::optional<double> earliest(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
-                                 const WorldShapes& start, const WorldShapes& end,
-                                 const Ballistic& motion, double h, const ImpactFilter& filter);
+  /// The earliest impact_time() over the sub-step of any of the context's candidate pairs,
+  /// nothing if none, from the shapes placed at its start and end along its motion.
+  std::optional<double> earliest(const StepContext& c);
 
   /// The pairs found touching at the earliest time by the last call to earliest().
-  const std::vector<ProxyPair>& touching() const { return touching_; }
+  const std::vector<ShapePair>& touching() const { return touching_; }
 
  private:
-  std::vector<ProxyPair> touching_;
+  std::vector<ShapePair> touching_;
 };
 
 /// Resolves the impacts of `pairs` in state `s` at time `t`: the pairs' contacts get the impulse
 /// of IM:col2D (one point), or sequential impulses iterated to convergence with the same
-/// restitution targets (two points, or several pairs at once). Appends what it did to `log`.
-/// `contacts` is scratch, kept by the caller so that an impact allocates nothing.
-void resolve_impacts(std::span<const ProxyPair> pairs, const BodyShapes& shapes,
-                     const BodyInertia& inertia, const Settings& settings, double t, MotionState& s,
-                     ContactSet& contacts, std::vector<Impact>& log);
+/// restitution targets (two points, or several pairs at once). Appends what it did to the
+/// context's impacts. `contacts` is scratch, kept by the caller so that an impact allocates
+/// nothing.
+void resolve_impacts(std::span<const ShapePair> pairs, StepContext& ctx, double t, MotionState& s,
+                     ContactSet& contacts);
 
 }  // namespace gp

@@ -10,8 +10,8 @@
 
 #include <Eigen/Dense>
 
-#include "engine/contacts/contact_solver.hpp"
-#include "engine/contacts/normal_lcp.hpp"
+#include "engine/solver/normal_lcp.hpp"
+#include "engine/solver/velocity_passes.hpp"
 
 namespace gp {
 

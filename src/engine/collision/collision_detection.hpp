@@ -5,17 +5,19 @@
 
 #include <vector>
 
+#include "engine/collision/body_shapes.hpp"
 #include "engine/collision/broadphase.hpp"
 #include "engine/collision/pair_order.hpp"
-#include "engine/contacts/body_shapes.hpp"
-#include "engine/contacts/contact_set.hpp"
-#include "engine/contacts/warm_start.hpp"
+#include "engine/solver/contact_set.hpp"
+#include "engine/solver/warm_start.hpp"
 
 namespace gp {
 
+struct StepContext;
+
 /// Appends to `contacts` the contact constraint of the shapes of `pair`, whose manifold `m` was
 /// found in state `s`: combined friction, and per point its depth and arms. Impulses start at 0.
-Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const ContactManifold& m,
                         const MotionState& s, ContactSet& contacts);
 
 class CollisionDetection {
@@ -25,17 +27,14 @@ class CollisionDetection {
 
   /// The pairs of shapes of different bodies, at least one of them dynamic, whose boxes overlap
   /// when each is grown to cover both its `start` and its `end` placement.
-  const std::vector<ProxyPair>& candidate_pairs(const BodyShapes& shapes,
+  const std::vector<ShapePair>& candidate_pairs(const BodyShapes& shapes,
                                                 const std::vector<char>& dynamic,
                                                 const WorldShapes& start, const WorldShapes& end);
 
-  /// The contacts of `pairs` at placement `world` of state `s`, sorted by key; a point whose pair
-  /// and features were in `previous` (sorted by key) starts with its impulses times
-  /// `impulse_scale`.
-  void find_contacts(const std::vector<ProxyPair>& pairs, const BodyShapes& shapes,
-                     const WorldShapes& world, const MotionState& s,
-                     const std::vector<WarmStart>& previous, double impulse_scale,
-                     ContactSet& contacts) const;
+  /// The context's contacts: those of its candidate pairs at the start placement and state,
+  /// sorted by key; a point whose pair and features were among the warm starts (sorted by key)
+  /// starts with their impulses times the warm-start scale.
+  void find_contacts(StepContext& ctx) const;
 
   double margin() const { return margin_; }
 
@@ -44,7 +43,7 @@ class CollisionDetection {
   SweepAndPrune broadphase_;
   PairOrder pair_order_;
   std::vector<BodyId> body_of_;   // per shape
-  std::vector<ProxyPair> pairs_;  // the broadphase's, filtered and sorted in place
+  std::vector<ShapePair> pairs_;  // the broadphase's, filtered and sorted in place
 };
 
 }  // namespace gp

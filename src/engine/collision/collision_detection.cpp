@@ -1,4 +1,6 @@
-#include "engine/contacts/collision_detection.hpp"
+#include "engine/collision/collision_detection.hpp"
+
+#include "engine/step/step_context.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +11,7 @@
 
 namespace gp {
 
-const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShapes& shapes,
+const std::vector<ShapePair>& CollisionDetection::candidate_pairs(const BodyShapes& shapes,
                                                                   const std::vector<char>& dynamic,
                                                                   const WorldShapes& start,
                                                                   const WorldShapes& end) {
@@ -20,7 +22,7 @@ const std::vector<ProxyPair>& CollisionDetection::candidate_pairs(const BodyShap
   broadphase_.find_pairs(SweptBoxes(start, end, body_of_, dynamic), pairs_);
   // Two parts of one body never collide.
   std::erase_if(pairs_,
-                [this](const ProxyPair& p) { return body_of_[p.first] == body_of_[p.second]; });
+                [this](const ShapePair& p) { return body_of_[p.first] == body_of_[p.second]; });
   // Sorted pairs make the order of the solver, and so the result, independent of the
   // broadphase's internal order.
   pair_order_.sort(pairs_, static_cast<std::uint32_t>(shapes.size()));
@@ -36,7 +38,7 @@ AnchorKind anchor_kind(const ShapeRecord& shape) {
 
 }  // namespace
 
-Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const ContactManifold& m,
+Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const ContactManifold& m,
                         const MotionState& s, ContactSet& contacts) {
   const ShapeRecord& a = shapes[pair.first];
   const ShapeRecord& b = shapes[pair.second];
@@ -64,16 +66,18 @@ Contact& append_contact(const ProxyPair& pair, const BodyShapes& shapes, const C
   return c;
 }
 
-void CollisionDetection::find_contacts(const std::vector<ProxyPair>& pairs,
-                                       const BodyShapes& shapes, const WorldShapes& world,
-                                       const MotionState& s, const std::vector<WarmStart>& previous,
-                                       double impulse_scale, ContactSet& contacts) const {
+void CollisionDetection::find_contacts(StepContext& ctx) const {
+  const BodyShapes& shapes = ctx.shapes;
+  const WorldShapes& world = ctx.world_start;
+  const std::vector<WarmStart>& previous = ctx.warm_starts;
+  const double impulse_scale = ctx.warm_start_scale();
+  ContactSet& contacts = ctx.contacts;
   contacts.clear();
   auto old = previous.begin();
-  for (const ProxyPair& p : pairs) {
+  for (const ShapePair& p : ctx.pairs) {
     const ContactManifold m = collide(world[p.first], world[p.second], margin_);
     if (m.count == 0) continue;
-    Contact& c = append_contact(p, shapes, m, s, contacts);
+    Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
     const std::uint64_t pair = WarmStart::pair_key(p);
     while (old != previous.end() && old->pair() < pair) ++old;

@@ -1,13 +1,31 @@
 #pragma once
-// The state the integrators advance, as structure of arrays indexed by body id: one contiguous
-// array per quantity keeps the hot loops over bodies cache-friendly.
+// The engine's core types, shared by every stage: a body's id, its inertia as collisions see it,
+// the state the integrators advance and a force callback's result. Structure of arrays indexed by
+// body id: one contiguous array per quantity keeps the hot loops over bodies cache-friendly.
 
+#include <cstdint>
 #include <vector>
 
-#include "engine/body_state.hpp"
 #include "gamephysics/models/types.hpp"
+#include "scene/body_state.hpp"
 
 namespace gp {
+
+/// A body's index in its space, counted from 0 in the order of adding.
+using BodyId = std::uint32_t;
+
+/// A force and a torque about the centre of mass.
+struct Wrench {
+  Vec2 force = Vec2::Zero();  ///< N
+  double torque = 0.0;        ///< N·m
+};
+
+/// Inverse masses [1/kg] and moments [1/(kg·m²)] by body id; 0 for bodies collisions cannot
+/// move or turn.
+struct BodyInertia {
+  std::vector<double> inverse_mass;
+  std::vector<double> inverse_moment;
+};
 
 // Eigen vectors are not initialised on construction: every resize fills with zeros so that the
 // entries of bodies a stage does not write (static, kinematic) are defined.

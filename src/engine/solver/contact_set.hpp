@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/contacts/contact.hpp"
+#include "engine/solver/contact.hpp"
 
 namespace gp {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "engine/collision/broadphase.hpp"
-#include "engine/collision/contact.hpp"
-#include "engine/contacts/contact_set.hpp"
+#include "engine/collision/manifold.hpp"
+#include "engine/solver/contact_set.hpp"
 
 namespace gp {
 
@@ -20,22 +20,22 @@ struct WarmStart {
   static constexpr int kShapeBits = 24;
 
   /// The key of the pair of shapes (first, second) alone, ordered as the pairs are.
-  static std::uint64_t pair_key(const ProxyPair& pair) {
+  static std::uint64_t pair_key(const ShapePair& pair) {
     return (std::uint64_t{pair.first} << kShapeBits) | pair.second;
   }
 
   /// The pair of shapes whose pair_key is `pair`.
-  static ProxyPair pair_of(std::uint64_t pair) {
+  static ShapePair pair_of(std::uint64_t pair) {
     return {static_cast<std::uint32_t>(pair >> kShapeBits),
             static_cast<std::uint32_t>(pair & ((std::uint64_t{1} << kShapeBits) - 1))};
   }
 
   /// The key of a point: its pair's key (pair_key), then its features' (FeatureId::key).
-  static std::uint64_t key_of(std::uint64_t pair, std::uint16_t features) {
+  static std::uint64_t point_key(std::uint64_t pair, std::uint16_t features) {
     return pair << 16 | features;
   }
 
-  /// key_of the point: ordered as the contacts, by pair.
+  /// point_key of the point: ordered as the contacts, by pair.
   std::uint64_t key;
   double normal;   ///< N·s
   double tangent;  ///< N·s

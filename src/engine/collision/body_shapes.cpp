@@ -1,4 +1,4 @@
-#include "engine/contacts/body_shapes.hpp"
+#include "engine/collision/body_shapes.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "engine/contacts/island_solver.hpp"
+#include "engine/solver/island_solver.hpp"
 
 #include <algorithm>
 #include <numeric>

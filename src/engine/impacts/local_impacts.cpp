@@ -1,0 +1,221 @@
+#include "engine/impacts/local_impacts.hpp"
+
+#include <algorithm>
+
+#include "engine/collision/collision_detection.hpp"
+#include "engine/collision/narrowphase.hpp"
+#include "engine/collision/signed_distance.hpp"
+#include "engine/geometry/shape_extent.hpp"
+#include "engine/step/step_context.hpp"
+
+namespace gp {
+
+void LocalImpacts::classify(StepContext& ctx) {
+  pending_.clear();
+  if (!ctx.impacts_allowed()) return;
+  ContactSet& contacts = ctx.contacts;
+  const WorldShapes& start = ctx.world_start;
+  const WorldShapes& end = ctx.world_end;
+  const ImpactFilter f = impact_filter(ctx.settings);
+  // Both lists are sorted by pair: one forward scan finds each pair's contact.
+  auto contact = contacts.begin();
+  for (const ShapePair& p : ctx.pairs) {
+    while (contact != contacts.end() && contact->key() < contact_key(p)) ++contact;
+    const bool has_contact = contact != contacts.end() && contact->key() == contact_key(p);
+    // Touching already: the contact solver's, and no distance to compute.
+    if (has_contact && touching(ctx, *contact)) continue;
+    const auto tau = impact_time({ctx.shapes[p.first], start[p.first], end[p.first]},
+                                 {ctx.shapes[p.second], start[p.second], end[p.second]},
+                                 *ctx.motion, {0.0, ctx.h}, f);
+    if (tau) pending_.push_back({p, *tau});
+  }
+  if (pending_.empty()) return;
+  // An impact is resolved at its t_c; its speculative contact must not close the gap before.
+  auto impact = pending_.begin();
+  contacts.erase_if([&](const Contact& c) {
+    while (impact != pending_.end() && contact_key(impact->pair) < c.key()) ++impact;
+    return impact != pending_.end() && contact_key(impact->pair) == c.key();
+  });
+}
+
+bool LocalImpacts::touching(const StepContext& ctx, const Contact& c) const {
+  for (const ContactPointState& p : ctx.contacts.points(c)) {
+    if (p.depth > -ctx.settings.linear_slop) return true;
+  }
+  return false;
+}
+
+bool LocalImpacts::in_solver(const StepContext& ctx, std::uint32_t shape) const {
+  return marks_[ctx.shapes[shape].body] & kInSolver;
+}
+
+bool LocalImpacts::engaged(const StepContext& ctx, const Contact& c) const {
+  const MotionState& s = ctx.start;
+  const double h = ctx.h;
+  for (const ContactPointState& p : ctx.contacts.points(c)) {
+    const double closing = -contact_normal_velocity(s, c, p) * h;  // m
+    if (p.depth + std::max(closing, 0.0) > -ctx.settings.linear_slop) return true;
+  }
+  return false;
+}
+
+void LocalImpacts::hand_over(StepContext& ctx) {
+  const WorldShapes& start = ctx.world_start;
+  ContactSet& speculative = ctx.speculative_contacts;
+  marks_.assign(ctx.dynamic.size(), 0);
+  const auto join = [this, &ctx](BodyId b) {
+    if (ctx.dynamic[b]) marks_[b] |= kInSolver;
+  };
+  for (const Contact& c : ctx.contacts) {
+    if (!engaged(ctx, c)) continue;
+    join(c.body_a);
+    join(c.body_b);
+  }
+  speculative.clear();
+  for (bool grew = true; grew;) {
+    grew = false;
+    std::erase_if(pending_, [&](const Pending& e) {
+      if (!in_solver(ctx, e.pair.first) && !in_solver(ctx, e.pair.second)) return false;
+      const WorldShapeView& a = start[e.pair.first];
+      const WorldShapeView& b = start[e.pair.second];
+      // A margin that reaches the other shape, so that the solver holds the gap closed.
+      const ContactManifold m = collide(a, b, signed_distance(a, b) + ctx.settings.contact_margin);
+      if (m.count > 0) append_contact(e.pair, ctx.shapes, m, ctx.start, speculative);
+      join(ctx.shapes[e.pair.first].body);
+      join(ctx.shapes[e.pair.second].body);
+      grew = true;
+      return true;
+    });
+  }
+  // The bodies left with impacts are the exact path's alone: a contact of theirs that is not
+  // engaged (apart, not closing within the step) is searched for impacts after theirs instead.
+  if (!pending_.empty()) {
+    for (const Pending& e : pending_) {
+      marks_[ctx.shapes[e.pair.first].body] |= kWithImpact;
+      marks_[ctx.shapes[e.pair.second].body] |= kWithImpact;
+    }
+    drop_contacts_with_impacts(ctx);
+  }
+}
+
+void LocalImpacts::drop_contacts_with_impacts(StepContext& ctx) const {
+  ctx.contacts.erase_if([this, &ctx](const Contact& c) {
+    return (ctx.dynamic[c.body_a] && (marks_[c.body_a] & kWithImpact)) ||
+           (ctx.dynamic[c.body_b] && (marks_[c.body_b] & kWithImpact));
+  });
+}
+
+void LocalImpacts::follow_path(BodyId b, double tau, MotionState& start,
+                               const StepAccelerations& acceleration) const {
+  const Ballistic path{start, acceleration};
+  start.set(b, {path.position(b, tau), path.angle(b, tau), path.velocity(b, tau),
+                path.angular_velocity(b, tau)});
+}
+
+bool LocalImpacts::resolve(StepContext& ctx) {
+  if (pending_.empty()) return true;
+  const double h = ctx.h;
+  MotionState& start = ctx.start;
+  const StepAccelerations& acceleration = ctx.motion->acceleration;
+  const double same_time = simultaneity(h);
+  while (!pending_.empty() && ctx.impacts_allowed()) {
+    const double tau =
+        std::min_element(pending_.begin(), pending_.end(), [](const Pending& x, const Pending& y) {
+          return x.time < y.time;
+        })->time;
+    group_.clear();
+    changed_.clear();
+    held_.clear();
+    // The group's bodies are moved to the impact in `start` itself, which is the step's scratch:
+    // only the static and kinematic ones, whose paths the impact does not change, are held aside
+    // to be put back after it.
+    for (const Pending& e : pending_) {
+      if (e.time > tau + same_time) continue;
+      group_.push_back(e.pair);
+      for (std::uint32_t shape : {e.pair.first, e.pair.second}) {
+        const BodyId b = ctx.shapes[shape].body;
+        if (ctx.dynamic[b]) {
+          if (marks_[b] & kChanged) continue;
+          marks_[b] |= kChanged;
+          changed_.push_back(b);
+        } else {
+          if (std::any_of(held_.begin(), held_.end(), [b](const Held& x) { return x.body == b; }))
+            continue;
+          held_.push_back({b, start.of(b)});
+        }
+        follow_path(b, tau, start, acceleration);
+      }
+    }
+    std::sort(group_.begin(), group_.end());
+    resolve_impacts(group_, ctx, ctx.time + tau, start, impact_contacts_);
+    ++ctx.impacts_this_step;
+    // Under constant accelerations the path through the state just after the impact, followed
+    // back by τ, starts where the body must start to pass through that state.
+    for (BodyId b : changed_) follow_path(b, -tau, start, acceleration);
+    for (const Held& x : held_) start.set(x.body, x.state);
+    std::erase_if(pending_, [this, &ctx](const Pending& e) {
+      return changed(ctx.shapes[e.pair.first]) || changed(ctx.shapes[e.pair.second]);
+    });
+    if (!search_after(ctx, tau)) return false;
+    for (BodyId b : changed_) marks_[b] = (marks_[b] & ~kChanged) | kWithImpact;
+  }
+  if (!pending_.empty()) return false;
+  drop_contacts_with_impacts(ctx);
+  return true;
+}
+
+bool LocalImpacts::search_after(StepContext& ctx, double tau) {
+  const std::span<const BodyId> changed = changed_;
+  const double h = ctx.h;
+  const Ballistic& motion = *ctx.motion;
+  WorldShapes& rest_start = ctx.world_start;
+  WorldShapes& end = ctx.world_end;
+  const auto frame_at = [&](std::uint32_t i, double when) {
+    const BodyId b = ctx.shapes[i].body;
+    return Transform(motion.position(b, when), motion.angle(b, when));
+  };
+  // First every changed shape placed where the rest of its path starts and ends, so that two
+  // changed shapes see each other's.
+  for (BodyId b : changed) {
+    for (auto [i, last] = ctx.shapes.of_body(b); i < last; ++i) {
+      end.place(i, ctx.shapes[i].local, frame_at(i, h));
+      rest_start.place(i, ctx.shapes[i].local, frame_at(i, tau));
+    }
+  }
+  const double half_margin = 0.5 * ctx.settings.contact_margin;
+  // The box of a shape over the rest of its path, + margin / 2.
+  const auto swept = [&](std::uint32_t i) {
+    return rest_start.bounds(i).united(end.bounds(i)).fattened(half_margin);
+  };
+  const ImpactFilter f = impact_filter(ctx.settings);
+  for (BodyId b : changed) {
+    for (auto [i, last] = ctx.shapes.of_body(b); i < last; ++i) {
+      const Aabb box = swept(i);
+      const WorldShapeView here = rest_start[i];
+      for (std::uint32_t k = 0; k < ctx.shapes.size(); ++k) {
+        const BodyId other = ctx.shapes[k].body;
+        if (other == b || !box.overlaps(swept(k))) continue;
+        // A pair of two changed bodies is searched once, from the one with the lower id.
+        if ((marks_[other] & kChanged) && other < b) continue;
+        if (in_solver(ctx, k)) {
+          // Its path is the solver's, not known here: safe to leave to the next step only if
+          // neither can have moved through the other by then.
+          const double reach_left =
+              closing_speed_bound(ctx.shapes[i], ctx.shapes[k], motion, h) * (h - tau);
+          if (reach_left >=
+              std::min(half_thickness(ctx.shapes[i].local), half_thickness(ctx.shapes[k].local))) {
+            return false;
+          }
+          continue;
+        }
+        const WorldShapeView there = to_world(ctx.shapes[k].local, frame_at(k, tau));
+        const auto when = impact_time({ctx.shapes[i], here, end[i]}, {ctx.shapes[k], there, end[k]},
+                                      motion, {tau, h}, f);
+        if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace gp

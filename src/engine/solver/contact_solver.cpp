@@ -1,0 +1,51 @@
+#include "engine/solver/contact_solver.hpp"
+
+#include "engine/solver/velocity_passes.hpp"
+#include "engine/step/step_context.hpp"
+
+namespace gp {
+
+namespace {
+
+PositionLimits position_limits(const Settings& s) {
+  return {s.position_iterations, s.linear_slop};
+}
+
+}  // namespace
+
+void ContactSolver::prepare(StepContext& c) {
+  prepare_contacts(c.contacts, c.shapes, c.inertia, c.start, c.h, c.settings);
+  warm_start(c.contacts, c.inertia, c.state);
+}
+
+void ContactSolver::solve_small_islands(StepContext& c) {
+  gp::solve_small_islands(c.contacts, c.inertia, c.settings.direct_solve_points, c.state, islands_);
+}
+
+void ContactSolver::solve_velocities(StepContext& c) {
+  gp::solve_velocities(c.contacts, c.inertia, c.settings.velocity_iterations,
+                       c.settings.velocity_tolerance, c.state);
+}
+
+void ContactSolver::apply_restitution(StepContext& c) {
+  gp::apply_restitution(c.contacts, c.inertia, c.state);
+}
+
+void ContactSolver::move_by_impulses(StepContext& c) {
+  move_by_contact_impulses(c.contacts, c.inertia, c.integrator->impulse_position_share() * c.h,
+                           c.state);
+}
+
+void ContactSolver::solve_speculative(StepContext& c) {
+  gp::solve_speculative(c, speculative_);
+  positions_.correct(c.speculative_contacts, c.shapes, c.inertia, c.start.angle,
+                     position_limits(c.settings), c.state);
+  c.speculative_contacts.clear();
+}
+
+void ContactSolver::correct_positions(StepContext& c) {
+  positions_.correct(c.contacts, c.shapes, c.inertia, c.start.angle, position_limits(c.settings),
+                     c.state);
+}
+
+}  // namespace gp

@@ -1,0 +1,40 @@
+#pragma once
+// The contact solver's stages over a sub-step, on the step context: effective masses and warm
+// start, the direct solve of small islands, the sequential-impulse passes, the bounce, the
+// displacement of the impulses, the impacts handed over as speculative contacts, and the position
+// passes. It owns their scratch, so that a warmed-up step allocates nothing.
+
+#include "engine/solver/island_solver.hpp"
+#include "engine/solver/position_passes.hpp"
+#include "engine/solver/speculative.hpp"
+
+namespace gp {
+
+struct StepContext;
+
+class ContactSolver {
+ public:
+  /// Each point's effective masses, target and bounce (prepare_contacts, from the start state),
+  /// then the impulses carried over from the last sub-step applied to the velocities.
+  void prepare(StepContext& c);
+  /// The islands of at most Settings::direct_solve_points points, solved at once.
+  void solve_small_islands(StepContext& c);
+  /// Sequential impulses until a pass changes no velocity by more than the tolerance.
+  void solve_velocities(StepContext& c);
+  /// The bounce of the points that were approaching, in one pass after the others.
+  void apply_restitution(StepContext& c);
+  /// The bodies moved by the impulses' velocity changes over the sub-step.
+  void move_by_impulses(StepContext& c);
+  /// The impacts handed over as speculative contacts, solved with the resting contacts near
+  /// them and their overlap corrected; they last this step only.
+  void solve_speculative(StepContext& c);
+  /// The position passes over the resting contacts.
+  void correct_positions(StepContext& c);
+
+ private:
+  IslandScratch islands_;
+  SpeculativeScratch speculative_;
+  PositionCorrection positions_;
+};
+
+}  // namespace gp

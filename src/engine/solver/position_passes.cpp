@@ -1,0 +1,135 @@
+#include "engine/solver/position_passes.hpp"
+
+#include <algorithm>
+
+#include "gamephysics/models/dd/angular_displacement.hpp"
+#include "gamephysics/models/dd/impulse.hpp"
+#include "gamephysics/models/dd/torque.hpp"
+#include "gamephysics/models/tm/newton_third_law.hpp"
+
+namespace gp {
+
+namespace {
+
+// The angles [rad] by which displace() turned A and B.
+struct Turns {
+  double a;
+  double b;
+};
+
+// Moves A by the positional impulse `shift` [kg·m] and B by the reaction, and turns each by the
+// moment of its share about its centre of mass [kg·m²] (DD:impulseV, DD:torque,
+// TM:NewtonThirdLawMot applied to displacements instead of velocities).
+Turns displace(const BodyInertia& m, const Contact& c, const Vec2& shift, double moment_a,
+               double moment_b, MotionState& s) {
+  const Vec2 back = tm::reaction_force(shift);
+  const Turns turns{moment_a * m.inverse_moment[c.body_a], moment_b * m.inverse_moment[c.body_b]};
+  s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
+  s.angle[c.body_a] = dd::rotated_orientation(s.angle[c.body_a], turns.a);
+  s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
+  s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b], turns.b);
+  return turns;
+}
+
+}  // namespace
+
+void move_by_contact_impulse(const ContactSet& contacts, const Contact& c,
+                             const BodyInertia& inertia, double duration, MotionState& s) {
+  for (const ContactPointState& p : contacts.points(c)) {
+    const double normal = duration * p.normal_impulse;
+    const double tangent = duration * p.tangent_impulse;
+    // The moment of j_n n + j_t t at arm r is j_n (r × n) + j_t (r × t) (DD:torque).
+    displace(inertia, c, normal * c.normal + tangent * contact_tangent(c.normal),
+             normal * p.normal_arm_a + tangent * p.tangent_arm_a,
+             -(normal * p.normal_arm_b + tangent * p.tangent_arm_b), s);
+  }
+}
+
+void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
+                              double duration, MotionState& s) {
+  for (const Contact& c : contacts) move_by_contact_impulse(contacts, c, inertia, duration, s);
+}
+
+void RotationCache::reset(std::size_t bodies) {
+  angle_.assign(bodies, std::numeric_limits<double>::quiet_NaN());
+  rotation_.resize(bodies);
+}
+
+namespace {
+
+// The arm [m], now, from a body's centre of mass to its deepest point inside the other body at
+// detection, carried along as the body moved and turned since. `deepest` gives that arm at
+// detection (rebuilt only where needed), `outward` the unit normal away from the body, `reach` the
+// arm's component along it, and `turned` turns a vector with the body.
+template <typename Arm, typename Turned>
+Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, const Vec2& outward,
+                double reach, const Turned& turned) {
+  switch (kind) {
+    case AnchorKind::kCentredDisc:
+      // Whichever way the disc turns, its deepest point is its radius away along the normal.
+      return reach * outward;
+    case AnchorKind::kOffsetDisc: {
+      const double radius = shape.local.circle().radius;
+      return turned(deepest() - radius * outward) + radius * outward;
+    }
+    case AnchorKind::kFixed:
+      break;
+  }
+  return turned(deepest());
+}
+
+}  // namespace
+
+void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& shapes,
+                                 const BodyInertia& inertia, std::span<const double> detected_angle,
+                                 const PositionLimits& limits, MotionState& s) {
+  RotationCache& rotations = rotations_;
+  const double slop = limits.slop;
+  int iterations = limits.iterations;
+  constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
+  constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
+  rotations.reset(s.angle.size());
+  const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
+  const auto turned_with = [&](BodyId b) {
+    return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
+  };
+  // Passes end after one that found no point overlapping by more than two slops: what is left
+  // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
+  for (bool deep = true; deep && iterations-- > 0;) {
+    deep = false;
+    for (const Contact& c : contacts) {
+      for (const ContactPointState& p : contacts.points(c)) {
+        // Each body's deepest point inside the other at detection, half the depth from the
+        // contact point.
+        const double half_depth = 0.5 * p.depth;
+        const Vec2 arm_a = anchor_arm(
+            p.anchor_a, shapes[c.shape_a],
+            [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
+            half_depth - p.tangent_arm_a, turned_with(c.body_a));
+        const Vec2 arm_b = anchor_arm(
+            p.anchor_b, shapes[c.shape_b],
+            [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
+            p.tangent_arm_b + half_depth, turned_with(c.body_b));
+        const double separation =
+            (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
+        const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
+        if (excess == 0.0) continue;
+        deep = deep || separation < -2.0 * slop;
+        // The impulses' effective mass, applied to a displacement instead of a velocity; set up
+        // for the step's arms, which the small turns of these passes barely change.
+        const Vec2 shift = -excess * p.normal_mass * c.normal;
+        // A push along the normal through a disc's centre does not turn it: zero exactly, not
+        // by round-off, so that nothing turns it and its rotation is not looked up.
+        const auto moment = [&](AnchorKind kind, const Vec2& arm, const Vec2& push) {
+          return kind == AnchorKind::kCentredDisc ? 0.0 : dd::torque(arm, push);
+        };
+        const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, arm_a, shift),
+                                     moment(p.anchor_b, arm_b, tm::reaction_force(shift)), s);
+        rotations.turn(c.body_a, turn(c.body_a), turns.a);
+        rotations.turn(c.body_b, turn(c.body_b), turns.b);
+      }
+    }
+  }
+}
+
+}  // namespace gp

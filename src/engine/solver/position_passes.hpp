@@ -1,0 +1,87 @@
+#pragma once
+// FR:Determine-Collision-Response-Over-Time on positions: the displacement the contact impulses
+// make over a step, and penetration removal by moving positions only, which adds no energy.
+
+#include <cmath>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "engine/collision/body_shapes.hpp"
+#include "engine/core.hpp"
+#include "engine/geometry/transform.hpp"
+#include "engine/solver/contact_set.hpp"
+
+namespace gp {
+
+/// Moves and turns the bodies by the velocity changes of the contacts' accumulated impulses
+/// (DD:impulseV, DD:torque) kept up for `duration` [s]: share × h for impulses that act over a
+/// step of h like forces (the integrator's impulse_position_share). A negative duration takes a
+/// displacement back.
+void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
+                              double duration, MotionState& s);
+
+/// move_by_contact_impulses for contact `c` of `contacts` alone.
+void move_by_contact_impulse(const ContactSet& contacts, const Contact& c,
+                             const BodyInertia& inertia, double duration, MotionState& s);
+
+/// The rotations of bodies by an angle each (in the position passes, the angle each has turned
+/// since its contacts were found), each computed only when first asked for, and after a small
+/// turn updated without trigonometry: most contact points of discs need none, and position passes
+/// turn bodies by tiny angles.
+class RotationCache {
+ public:
+  /// Forgets every rotation; sized for `bodies` bodies.
+  void reset(std::size_t bodies);
+  /// `body` was turned by `turn` [rad] to `angle` [rad]: its rotation follows, or is forgotten
+  /// after a turn too large for the series.
+  void turn(BodyId body, double angle, double turn) {
+    // Beyond this, the series of Rotation::turned_slightly errs by more than 1e-13 rad.
+    constexpr double kSmallTurn = 1e-3;
+    if (turn == 0.0 || std::isnan(angle_[body])) return;
+    if (std::abs(turn) > kSmallTurn) {
+      angle_[body] = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    rotation_[body] = rotation_[body].turned_slightly(turn);
+    angle_[body] = angle;
+  }
+  /// `v` turned by `angle` [rad], the current angle of `body`.
+  Vec2 rotate(BodyId body, double angle, const Vec2& v) {
+    if (angle_[body] != angle) {
+      angle_[body] = angle;
+      rotation_[body] = Rotation(angle);
+    }
+    return rotation_[body].rotate(v);
+  }
+
+ private:
+  std::vector<double> angle_;  // rad, the angle each rotation is for; NaN: none yet
+  std::vector<Rotation> rotation_;
+};
+
+/// How far the position passes go: at most `iterations` passes, on overlaps deeper than `slop` [m].
+struct PositionLimits {
+  int iterations;
+  double slop;
+};
+
+/// The position passes, with the rotations they turn bodies by kept between steps so that a step
+/// does not allocate.
+class PositionCorrection {
+ public:
+  /// At most `limits.iterations` passes that move and turn bodies apart (positions only) where the
+  /// contact points overlap by more than `limits.slop` [m], removing a fifth of the excess per pass
+  /// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops. The
+  /// overlap is measured between each body's deepest point inside the other at detection, carried
+  /// along as the body moved and turned from `detected_angle` [rad, by body id], its angle when the
+  /// contacts were found.
+  void correct(const ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
+               std::span<const double> detected_angle, const PositionLimits& limits,
+               MotionState& s);
+
+ private:
+  RotationCache rotations_;
+};
+
+}  // namespace gp

@@ -1,0 +1,29 @@
+#pragma once
+// Impacts on bodies that rest on others, handed over to the contact solver by LocalImpacts.
+
+#include <cstddef>
+#include <vector>
+
+#include "engine/core.hpp"
+#include "engine/step/step_context.hpp"
+
+namespace gp {
+
+/// Scratch for solve_speculative, kept by the caller so that a step does not allocate.
+struct SpeculativeScratch {
+  std::vector<char> reached;        // per body
+  std::vector<char> included;       // per resting contact
+  std::vector<std::size_t> nearby;  // resting contacts solved with the impacts
+  std::vector<BodyId> newly;
+};
+
+/// Impacts the contact solver takes on after the resting contacts are solved: the speculative
+/// contacts' points, still apart at the start of the step of h [s], whose bodies also rest on
+/// others (see LocalImpacts). They are solved together with the resting contacts within a few
+/// contacts of them for the velocity iterations, and bounce by C_R after; the impulses this adds
+/// act from the impact on, so they move the bodies by h × Δv, which closes each gap exactly, rather
+/// than by the resting share, which would leave a fast body overlapping and press the body under it
+/// into the ground.
+void solve_speculative(StepContext& c, SpeculativeScratch& scratch);
+
+}  // namespace gp

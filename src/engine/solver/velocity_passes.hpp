@@ -1,0 +1,80 @@
+#pragma once
+// FR:Determine-Collision-Response-Over-Time for contacts that persist or rest, on velocities:
+// sequential impulses with accumulated, clamped impulses and warm starting (the impulse of
+// GD:impulse applied point by point until all contacts agree), friction where μ > 0
+// (LC:Include-Dampening), and the bounce after them. The passes on positions are in
+// position_passes.hpp.
+
+#include <span>
+#include <vector>
+
+#include "engine/collision/body_shapes.hpp"
+#include "engine/core.hpp"
+#include "engine/solver/contact_set.hpp"
+#include "scene/settings.hpp"
+
+namespace gp {
+
+/// An entry K_ij of the effective-mass matrix of contact points [1/kg]: the change of point i's
+/// v_rel·n per unit normal impulse at point j, summed over the bodies the two points share, A
+/// counting + and B − (GD:impulse's denominator when i = j).
+double normal_coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
+                       const ContactPointState& pj, const BodyInertia& m);
+
+/// v_rel·n at point `p` of `c` in state `s` [m/s]: the normal component of the velocity of A's
+/// material point relative to B's (DD:chaslesThm, DD:reVeInColl).
+double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
+
+/// Applies the impulse `normal` n + `tangent` t [N·s] at point `p` to A and the reaction to B
+/// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot), with the point's arms.
+void apply_contact_impulse(const Contact& c, const ContactPointState& p, double normal,
+                           double tangent, const BodyInertia& inertia, MotionState& s);
+
+/// IM:col2D at point `p` of `c` in state `s`: the impulse j n that gives the point's normal
+/// velocity −C_R times its value before, applied to both bodies' velocities; returns j [N·s].
+double apply_collision_response(const Contact& c, const ContactPointState& p, double restitution,
+                                const BodyInertia& inertia, MotionState& s);
+
+/// The coefficient of restitution C_R of contact `c`: the larger of its two shapes' (the
+/// combination rule of FR:Input-Surface-Properties, as Box2D's).
+double contact_restitution(const BodyShapes& shapes, const Contact& c);
+
+/// Impacts among bodies already touching, a Newton's cradle at rest struck at one end: resolved
+/// pair after pair by apply_collision_response with each contact's C_R, pass after pass, until
+/// no touching point with C_R > 0 approaches faster than the restitution threshold (at most as
+/// many passes as the solver's velocity iterations). This is the sequential model of simultaneous
+/// impacts, under which the cradle passes the momentum along the row to its last ball, where a
+/// simultaneous solve spreads it over the row. Returns whether any impulse was applied.
+bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
+                       const BodyInertia& inertia, const Settings& settings, MotionState& s);
+
+/// Prepares each point for a step of h [s]: its effective masses; its target normal velocity, the
+/// speed that just closes the gap for points still apart, else 0; for touching points approaching
+/// faster than the restitution threshold, the bounce C_R v_n from that approach velocity v_n
+/// (measured in `before`, the state before the step's forces) for apply_restitution; and the
+/// normal block of each two-point contact.
+void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
+                      const MotionState& before, double h, const Settings& settings);
+
+/// Applies the carried-over impulses of every point to the velocities of `s`.
+void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
+
+/// At most `iterations` passes of sequential impulses over the points' friction and normal
+/// constraints (no bounce: restitution comes after, in apply_restitution), ending after the
+/// first pass in which no contact's impulses changed its two bodies' velocities by more than
+/// `tolerance` [m/s] (0: only a pass that changed nothing ends them). Returns the passes made.
+int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
+                     double tolerance, MotionState& s);
+
+/// One pass of sequential impulses over contact `c` of `contacts`, friction then normal, on the
+/// velocities of `s`; returns the largest change it made to its two bodies' velocities [m/s].
+double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
+                          MotionState& s);
+
+/// One pass that adds the bounce, −C_R times the approach velocity, to each point that was
+/// approaching and took an impulse. A separate pass after the others (as in Box2D 3) rather than
+/// a target inside them: simultaneous targets make a body pinned between two contacts (a disc
+/// struck against a wall) bounce off both at once, which creates energy.
+void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
+
+}  // namespace gp

@@ -1,0 +1,262 @@
+#include "engine/step/stages.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "engine/solver/velocity_passes.hpp"
+#include "gamephysics/models/dd/angular_displacement.hpp"
+#include "gamephysics/models/dd/angular_velocity.hpp"
+#include "gamephysics/models/dd/linear_displacement.hpp"
+#include "gamephysics/models/dd/linear_velocity.hpp"
+
+namespace gp {
+
+namespace {
+
+bool collides(const StepContext& c) {
+  return c.collides;
+}
+bool solves_islands(const StepContext& c) {
+  return c.collides && c.settings.direct_solve_points > 0;
+}
+bool has_dynamic(const StepContext& c) {
+  return !c.forces.bodies().empty();
+}
+bool has_kinematic(const StepContext& c) {
+  return !c.kinematic.empty();
+}
+
+std::string count(std::size_t n, const std::string& what) {
+  return std::to_string(n) + " " + what;
+}
+
+// The ballistic paths over the sub-step under the accelerations at its start, the shapes placed at
+// both ends of them, and the candidate pairs of the boxes swept between.
+bool sweep(StepContext& c, StepMechanisms& m) {
+  if (c.forces.constant()) {
+    c.motion.emplace(c.start, StepAccelerations(c.forces, c.dynamic));
+  } else {
+    c.varying_acceleration.resize(c.state.position.size());
+    c.forces.evaluate(c.time, c.start, c.varying_acceleration);
+    c.motion.emplace(c.start, StepAccelerations(c.varying_acceleration));
+  }
+  c.shapes.place(c.start.position, c.start.angle, c.world_start);
+  // Boxes swept along the ballistic path catch a fast body wherever it is during the step. The
+  // path covers every body: kinematic and static ones have no acceleration, so it ends where
+  // the kinematic stage moves them, and static ones where they are.
+  const Ballistic& path = *c.motion;
+  const double h = c.h;
+  c.shapes.place([&](BodyId j) { return std::pair(path.position(j, h), path.angle(j, h)); },
+                 c.world_end);
+  c.pairs = m.detection.candidate_pairs(c.shapes, c.dynamic, c.world_start, c.world_end);
+  return true;
+}
+
+// Shortens the sub-step to the earliest impact; its pairs leave the contacts' pairs, as they are
+// resolved exactly at t_c and the solver must not close their gap before.
+bool search_impacts(StepContext& c, StepMechanisms& m) {
+  if (!c.impacts_allowed()) return true;
+  const auto tau = m.impact_search.earliest(c);
+  if (!tau || *tau >= c.h) return true;
+  c.h = *tau;
+  c.impact_pairs = m.impact_search.touching();
+  c.contact_pairs.assign(c.pairs.begin(), c.pairs.end());
+  std::erase_if(c.contact_pairs, [&c](const ShapePair& p) {
+    return std::find(c.impact_pairs.begin(), c.impact_pairs.end(), p) != c.impact_pairs.end();
+  });
+  c.pairs = c.contact_pairs;
+  return true;
+}
+
+bool find_contacts(StepContext& c, StepMechanisms& m) {
+  m.detection.find_contacts(c);
+  return true;
+}
+
+bool resolve_local_impacts(StepContext& c, StepMechanisms& m) {
+  m.local_impacts.classify(c);
+  m.local_impacts.hand_over(c);
+  if (!m.local_impacts.resolve(c)) return false;
+  c.state = c.start;
+  return true;
+}
+
+// Impacts among touching bodies happen at the start of the step, before its forces.
+bool propagate(StepContext& c, StepMechanisms&) {
+  if (!c.contacts.empty() &&
+      propagate_impacts(c.contacts, c.shapes, c.inertia, c.settings, c.state)) {
+    c.start.velocity = c.state.velocity;
+    c.start.angular_velocity = c.state.angular_velocity;
+  }
+  return true;
+}
+
+bool integrate(StepContext& c, StepMechanisms&) {
+  c.integrator->advance(c.forces, c.time, c.h, c.state);
+  return true;
+}
+
+bool move_kinematic(StepContext& c, StepMechanisms&) {
+  for (BodyId k : c.kinematic) {
+    c.state.position[k] = dd::displaced_position(
+        c.state.position[k], dd::displacement_from_velocity(c.state.velocity[k], c.h));
+    c.state.angle[k] = dd::rotated_orientation(
+        c.state.angle[k], dd::angular_displacement_from_velocity(c.state.angular_velocity[k], c.h));
+  }
+  return true;
+}
+
+// A solver stage runs only while there are contacts to solve.
+template <void (ContactSolver::*Solve)(StepContext&)>
+bool on_contacts(StepContext& c, StepMechanisms& m) {
+  if (!c.contacts.empty()) (m.solver.*Solve)(c);
+  return true;
+}
+
+bool solve_speculative(StepContext& c, StepMechanisms& m) {
+  if (!c.speculative_contacts.empty()) m.solver.solve_speculative(c);
+  return true;
+}
+
+bool keep_warm_starts(StepContext& c, StepMechanisms&) {
+  keep_impulses(c.contacts, c.warm_starts);
+  return true;
+}
+
+// The impacts that ended the sub-step, resolved at its end, t_c.
+bool resolve_sub_step_impacts(StepContext& c, StepMechanisms& m) {
+  if (c.impact_pairs.empty()) return true;
+  resolve_impacts(c.impact_pairs, c, c.time + c.h, c.state, m.impact_contacts);
+  ++c.impacts_this_step;
+  return true;
+}
+
+std::string describe_integration(const StepContext& c) {
+  std::string forces;
+  if (c.settings.gravity != Vec2::Zero()) forces += "; uniform gravity g (IM:transMot)";
+  if (c.settings.G) {
+    forces += "; pairwise gravitation G m / d², O(N²) (TM:UniversalGravLaw GD:accelGravity)";
+  }
+  if (c.forces.any_applied()) {
+    forces +=
+        "; applied forces and torques, constant, at a point or time-dependent "
+        "(TM:NewtonSecLawMot TM:NewtonSecLawRotMot DD:torque)";
+  }
+  const auto rotating =
+      static_cast<std::size_t>(std::count(c.forces.rotates().begin(), c.forces.rotates().end(), 1));
+  return count(c.forces.bodies().size(), "dynamic bodies, ") + std::to_string(rotating) +
+         " of them rotating (the others skip rotation)" + forces;
+}
+
+constexpr std::array kStages{
+    Stage{"broadphase: sweep and prune", "FR:Determine-Collisions", kLocalPass | kSubStepPass,
+          collides,
+          [](const StepContext& c) {
+            return count(c.shapes.size(), "shapes, boxes swept along the ballistic paths");
+          },
+          sweep},
+    Stage{"time of impact: sub-step ends at the first impact", "IM:col2D", kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("the sub-step is shortened to the earliest impact of any pair");
+          },
+          search_impacts},
+    Stage{"narrowphase: contact manifolds",
+          "FR:Determine-Collisions A:collisionType LC:Expanded-Collisions",
+          kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("1 point (vertex to edge) or 2 points (edge to edge), warm started");
+          },
+          find_contacts},
+    Stage{"time of impact: local impacts", "IM:col2D GD:impulse", kLocalPass, collides,
+          [](const StepContext&) {
+            return std::string(
+                "impacts resolved at t_c for their own bodies; impacts on resting "
+                "bodies handed to the solver as speculative contacts");
+          },
+          resolve_local_impacts},
+    Stage{"impacts among touching bodies", "IM:col2D", kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("resting bodies struck, pair after pair (a Newton's cradle)");
+          },
+          propagate},
+    Stage{"integration",
+          "IM:transMot IM:rotMot DD:linAcc DD:linVel DD:linDisp DD:angAccel "
+          "DD:angVel DD:angDisp FR:Calculate-Translation-Over-Time "
+          "FR:Calculate-Rotation-Over-Time",
+          kLocalPass | kSubStepPass, has_dynamic, describe_integration, integrate},
+    Stage{"kinematic bodies", "DD:linVel DD:angVel", kLocalPass | kSubStepPass, has_kinematic,
+          [](const StepContext& c) {
+            return count(c.kinematic.size(), "bodies moved at their velocity");
+          },
+          move_kinematic},
+    Stage{"contact solver: prepare and warm start", "GD:impulse DD:impulseV",
+          kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("effective masses, targets and bounces; last impulses carried over");
+          },
+          on_contacts<&ContactSolver::prepare>},
+    Stage{"contact solver: small islands solved directly",
+          "FR:Determine-Collision-Response-Over-Time GD:impulse DD:impulseV TM:NewtonThirdLawMot",
+          kLocalPass | kSubStepPass, solves_islands,
+          [](const StepContext& c) {
+            return "normal impulses of islands of at most " +
+                   std::to_string(c.settings.direct_solve_points) +
+                   " points, all at once (active set)";
+          },
+          on_contacts<&ContactSolver::solve_small_islands>},
+    Stage{"contact solver: sequential impulses",
+          "FR:Determine-Collision-Response-Over-Time GD:impulse DD:reVeInColl DD:chaslesThm "
+          "DD:impulseV TM:NewtonThirdLawMot",
+          kLocalPass | kSubStepPass, collides,
+          [](const StepContext& c) {
+            return "resting and persistent contacts; at most " +
+                   std::to_string(c.settings.velocity_iterations) +
+                   " passes, ending once a pass changes no velocity by more than the tolerance";
+          },
+          on_contacts<&ContactSolver::solve_velocities>},
+    Stage{"contact solver: restitution", "IM:col2D", kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("the bounce of approaching points, in one pass after the others");
+          },
+          on_contacts<&ContactSolver::apply_restitution>},
+    Stage{"contact solver: impulses move the bodies", "DD:impulseV DD:torque",
+          kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("positions moved by the impulses' velocity changes over the step");
+          },
+          on_contacts<&ContactSolver::move_by_impulses>},
+    Stage{"speculative contacts", "IM:col2D GD:impulse", kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("impacts on resting bodies, solved with the contacts near them");
+          },
+          solve_speculative},
+    Stage{
+        "position correction", "FR:Determine-Collision-Response-Over-Time",
+        kLocalPass | kSubStepPass, collides,
+        [](const StepContext&) { return std::string("overlap removed by moving positions only"); },
+        on_contacts<&ContactSolver::correct_positions>},
+    Stage{"warm starts kept", "", kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("each point's impulses, for the next sub-step");
+          },
+          keep_warm_starts},
+    Stage{"impacts at the end of the sub-step", "IM:col2D GD:impulse", kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string("IM:col2D at t_c for one point, else an iterated solve");
+          },
+          resolve_sub_step_impacts},
+};
+
+}  // namespace
+
+std::span<const Stage> step_stages() {
+  return kStages;
+}
+
+bool runs_local_pass(const StepContext& c) {
+  // Local impacts need ballistic paths that the integrator follows exactly.
+  return c.collides && c.forces.constant() && c.integrator->exact_for_constant_acceleration();
+}
+
+}  // namespace gp

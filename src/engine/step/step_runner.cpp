@@ -1,0 +1,54 @@
+#include "engine/step/step_runner.hpp"
+
+#include <string>
+
+namespace gp {
+
+StepRunner::StepRunner(const Settings& settings)
+    : mechanisms_(settings), stage_runs_(step_stages().size(), 0) {}
+
+void StepRunner::step(StepContext& c, double dt) {
+  c.impacts.clear();
+  c.impacts_this_step = 0;
+  if (runs_local_pass(c) && run_pass(c, kLocalPass, dt) > 0.0) return;
+  c.impacts.clear();
+  c.impacts_this_step = 0;
+  // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
+  for (double remaining = dt; remaining > 0.0;) remaining -= run_pass(c, kSubStepPass, remaining);
+}
+
+double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
+  ++(pass == kLocalPass ? local_passes_ : sub_steps_);
+  c.h = h;
+  c.start = c.state;
+  c.impact_pairs.clear();
+  const std::span<const Stage> stages = step_stages();
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    const Stage& stage = stages[i];
+    if (!(stage.passes & pass) || !stage.needed(c)) continue;
+    ++stage_runs_[i];
+    if (!stage.run(c, mechanisms_)) return 0.0;
+  }
+  c.time += c.h;
+  c.previous_h = c.h;
+  return c.h;
+}
+
+std::vector<PipelineStage> StepRunner::pipeline(const StepContext& c) const {
+  const bool local = runs_local_pass(c);
+  std::vector<PipelineStage> out;
+  for (const Stage& stage : step_stages()) {
+    std::string passes;
+    if (local && (stage.passes & kLocalPass)) passes = "local step";
+    if (stage.passes & kSubStepPass) {
+      passes += passes.empty() ? "sub-steps" : ", sub-steps";
+      if (local) passes += " (fallback)";
+    }
+    const bool needed = stage.needed(c) && !passes.empty();
+    out.push_back({std::string(stage.name), std::string(stage.srs_ids),
+                   needed ? stage.describe(c) : std::string(), passes, needed});
+  }
+  return out;
+}
+
+}  // namespace gp

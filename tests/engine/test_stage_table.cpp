@@ -1,0 +1,54 @@
+// The step runs the table of stages that --explain prints: on every shipped scene, the stages a
+// step executed are exactly those the explanation lists for the passes the step ran.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "engine/scene/scene_space.hpp"
+#include "engine/space_impl.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+std::set<std::string> listed_for(const std::vector<gp::PipelineStage>& stages,
+                                 const std::string& pass) {
+  std::set<std::string> out;
+  for (const gp::PipelineStage& s : stages) {
+    if (s.needed && s.passes.find(pass) != std::string::npos) out.insert(s.name);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("The explanation lists exactly the stages each pass of a step executes, on every scene",
+          "[FR:Simulation-Space]") {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(GP_SOURCE_DIR "/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    gp::SceneOverrides shorter;
+    shorter.duration = 0.5;  // long enough for contacts, impacts and resting in every scene
+    shorter.output_dt = 0.5;
+    const gp::Scene scene = gp::load_scene(entry.path(), shorter);
+    const auto space = gp::build_space(scene);
+    const std::vector<gp::PipelineStage> explained = space->pipeline();
+    const gp::StepRunner& runner = gp::SpaceInternals::runner(*space);
+    REQUIRE(runner.local_passes() + runner.sub_steps() == 0);
+    for (double t = 0.0; t < scene.duration; t += scene.dt) space->step(scene.dt);
+    INFO(entry.path().filename().string());
+    const auto stages = gp::step_stages();
+    std::set<std::string> executed;
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+      if (runner.stage_runs()[i] > 0) executed.insert(std::string(stages[i].name));
+    }
+    // A stage the table lists for a pass that ran must have run; one it lists for no pass that
+    // ran must not have.
+    std::set<std::string> expected;
+    if (runner.local_passes() > 0) expected.merge(listed_for(explained, "local step"));
+    if (runner.sub_steps() > 0) expected.merge(listed_for(explained, "sub-steps"));
+    CHECK(executed == expected);
+    ++scenes;
+  }
+  CHECK(scenes >= 18);
+}
