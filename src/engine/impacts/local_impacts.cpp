@@ -46,7 +46,7 @@ bool LocalImpacts::touching(const StepContext& ctx, const Contact& c) const {
 }
 
 bool LocalImpacts::in_solver(const StepContext& ctx, std::uint32_t shape) const {
-  return marks_[ctx.shapes[shape].body] & kInSolver;
+  return roles_[ctx.shapes[shape].body] == BodyRole::kInSolver;
 }
 
 bool LocalImpacts::engaged(const StepContext& ctx, const Contact& c) const {
@@ -62,9 +62,9 @@ bool LocalImpacts::engaged(const StepContext& ctx, const Contact& c) const {
 void LocalImpacts::hand_over(StepContext& ctx) {
   const WorldShapes& start = ctx.world_start;
   ContactSet& speculative = ctx.speculative_contacts;
-  marks_.assign(ctx.dynamic.size(), 0);
+  roles_.assign(ctx.dynamic.size(), BodyRole::kFree);
   const auto join = [this, &ctx](BodyId b) {
-    if (ctx.dynamic[b]) marks_[b] |= kInSolver;
+    if (ctx.dynamic[b]) roles_[b] = BodyRole::kInSolver;
   };
   for (const Contact& c : ctx.contacts) {
     if (!engaged(ctx, c)) continue;
@@ -91,8 +91,8 @@ void LocalImpacts::hand_over(StepContext& ctx) {
   // engaged (apart, not closing within the step) is searched for impacts after theirs instead.
   if (!pending_.empty()) {
     for (const Pending& e : pending_) {
-      marks_[ctx.shapes[e.pair.first].body] |= kWithImpact;
-      marks_[ctx.shapes[e.pair.second].body] |= kWithImpact;
+      roles_[ctx.shapes[e.pair.first].body] = BodyRole::kWithImpact;
+      roles_[ctx.shapes[e.pair.second].body] = BodyRole::kWithImpact;
     }
     drop_contacts_with_impacts(ctx);
   }
@@ -100,8 +100,8 @@ void LocalImpacts::hand_over(StepContext& ctx) {
 
 void LocalImpacts::drop_contacts_with_impacts(StepContext& ctx) const {
   ctx.contacts.erase_if([this, &ctx](const Contact& c) {
-    return (ctx.dynamic[c.body_a] && (marks_[c.body_a] & kWithImpact)) ||
-           (ctx.dynamic[c.body_b] && (marks_[c.body_b] & kWithImpact));
+    return (ctx.dynamic[c.body_a] && roles_[c.body_a] == BodyRole::kWithImpact) ||
+           (ctx.dynamic[c.body_b] && roles_[c.body_b] == BodyRole::kWithImpact);
   });
 }
 
@@ -135,8 +135,8 @@ bool LocalImpacts::resolve(StepContext& ctx) {
       for (std::uint32_t shape : {e.pair.first, e.pair.second}) {
         const BodyId b = ctx.shapes[shape].body;
         if (ctx.dynamic[b]) {
-          if (marks_[b] & kChanged) continue;
-          marks_[b] |= kChanged;
+          if (roles_[b] == BodyRole::kResolving) continue;
+          roles_[b] = BodyRole::kResolving;
           changed_.push_back(b);
         } else {
           if (std::any_of(held_.begin(), held_.end(), [b](const Held& x) { return x.body == b; }))
@@ -157,7 +157,7 @@ bool LocalImpacts::resolve(StepContext& ctx) {
       return changed(ctx.shapes[e.pair.first]) || changed(ctx.shapes[e.pair.second]);
     });
     if (!search_after(ctx, tau)) return false;
-    for (BodyId b : changed_) marks_[b] = (marks_[b] & ~kChanged) | kWithImpact;
+    for (BodyId b : changed_) roles_[b] = BodyRole::kWithImpact;
   }
   if (!pending_.empty()) return false;
   drop_contacts_with_impacts(ctx);
@@ -196,7 +196,7 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
         const BodyId other = ctx.shapes[k].body;
         if (other == b || !box.overlaps(swept(k))) continue;
         // A pair of two changed bodies is searched once, from the one with the lower id.
-        if ((marks_[other] & kChanged) && other < b) continue;
+        if (roles_[other] == BodyRole::kResolving && other < b) continue;
         if (in_solver(ctx, k)) {
           // Its path is the solver's, not known here: safe to leave to the next step only if
           // neither can have moved through the other by then.

@@ -64,8 +64,10 @@ class LocalImpacts {
   /// state: a point touching, or closing its gap within the sub-step.
   bool engaged(const StepContext& ctx, const Contact& c) const;
   bool in_solver(const StepContext& ctx, std::uint32_t shape) const;
-  bool changed(const ShapeRecord& shape) const { return marks_[shape.body] & kChanged; }
-  /// Drops from the context's contacts every contact of a dynamic body marked kWithImpact.
+  bool changed(const ShapeRecord& shape) const {
+    return roles_[shape.body] == BodyRole::kResolving;
+  }
+  /// Drops from the context's contacts every contact of a dynamic body whose role is kWithImpact.
   void drop_contacts_with_impacts(StepContext& ctx) const;
   /// Moves body b in `start` along its ballistic path from there by τ [s] (back for τ < 0).
   void follow_path(BodyId b, double tau, MotionState& start,
@@ -76,13 +78,19 @@ class LocalImpacts {
   bool search_after(StepContext& ctx, double tau);
 
   std::vector<Pending> pending_;
-  // What hand_over() and resolve() learn of each body, one byte of these bits per body.
-  enum Mark : std::uint8_t {
-    kInSolver = 1,    // dynamic and in a contact of the solver this step
-    kWithImpact = 2,  // in a pending impact after hand_over(), or changed by one in resolve()
-    kChanged = 4,     // dynamic and in the impact being resolved
+  // Who owns a body's contacts this step, one role per body. A body's contacts follow it: those
+  // of a body in the solver are the contact solver's (resting, or impacts handed over as
+  // speculative contacts); those of a body with an impact are dropped, as its impacts' search
+  // covers them. Transitions: hand_over() makes a dynamic body with an engaged contact kInSolver
+  // and the bodies of the impacts left kWithImpact; resolve() makes the dynamic bodies of the
+  // impact at hand kResolving, and kWithImpact once it is resolved. kInSolver is final.
+  enum class BodyRole : std::uint8_t {
+    kFree,        // in no impact and no engaged contact
+    kInSolver,    // dynamic, with a contact engaged over the step: the contact solver's
+    kWithImpact,  // in a pending impact, or changed by a resolved one: the exact path's
+    kResolving,   // dynamic, in the impact being resolved
   };
-  std::vector<std::uint8_t> marks_;
+  std::vector<BodyRole> roles_;
   // Scratch kept between steps so that impacts allocate nothing once the scene is warmed up.
   std::vector<ShapePair> group_;
   std::vector<BodyId> changed_;
