@@ -140,11 +140,12 @@ void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Mo
         }
       }
     } else {
+      // Corner on corner: the normal must stay inside both corners' cones, so both are watched.
+      const bool second_corner = world_.bodies[c.second].hulls[c.second_hull].vertices.size() >= 2;
+      const bool first_corner = world_.bodies[c.first].hulls[c.first_hull].vertices.size() >= 2;
       for (int side = 0; side < 2; ++side) {
-        if (world_.bodies[c.first].hulls[c.first_hull].vertices.size() >= 2 ||
-            world_.bodies[c.second].hulls[c.second_hull].vertices.size() >= 2) {
-          roots_.push_back({RootKind::OffCorner, i, side});
-        }
+        if (second_corner) roots_.push_back({RootKind::OffCorner, i, side});
+        if (first_corner) roots_.push_back({RootKind::OffCorner, i, 2 + side});
       }
     }
   }
@@ -185,13 +186,13 @@ void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> cont
         g[r] = at_vertex(world_, c, root.detail, s.motions).gap;
         break;
       case RootKind::OffCorner: {
-        // The corner is the second's vertex (its outward normal is n) or else the first's (−n).
-        const Hull& second = world_.bodies[c.second].hulls[c.second_hull];
-        g[r] = second.vertices.size() >= 2
-                   ? inside_corner(second, c.second_feature, s.motions[c.second], k.normal,
-                                   root.detail)
+        // Sides 0, 1 are of the second's corner (its outward normal is n), 2, 3 of the first's
+        // (−n).
+        g[r] = root.detail < 2
+                   ? inside_corner(world_.bodies[c.second].hulls[c.second_hull], c.second_feature,
+                                   s.motions[c.second], k.normal, root.detail)
                    : inside_corner(world_.bodies[c.first].hulls[c.first_hull], c.first_vertex,
-                                   s.motions[c.first], -k.normal, root.detail);
+                                   s.motions[c.first], -k.normal, root.detail - 2);
         break;
       }
       case RootKind::Approach:

@@ -7,7 +7,8 @@
 //   StickLimit a sticking contact: μ f_n ∓ f_t (friction reaches its bound: stick to slip);
 //   SlipStop   a sliding contact: its slip, signed so that it falls (slip to stick, or reversal);
 //   OffEdge    a vertex on an edge: its distance to either end (it slides off the edge);
-//   OffCorner  a contact at a corner: how far its normal is inside the corner's normal cone.
+//   OffCorner  a contact at a corner: how far its normal is inside the corner's normal cone
+//              (corner on corner: each corner's).
 // The list is rebuilt whenever the active contacts change.
 
 #include <cstddef>
@@ -24,7 +25,9 @@ enum class RootKind { Approach, Landing, LiftOff, StickLimit, SlipStop, OffEdge,
 struct Root {
   RootKind kind;
   std::size_t index;  ///< the pair (Approach) or the active contact (every other kind)
-  int detail;         ///< Landing: the vertex; StickLimit, OffEdge, OffCorner: which side (0, 1)
+  /// Landing: the vertex; StickLimit, OffEdge: which side (0, 1); OffCorner: the second's
+  /// corner's side (0, 1) or the first's (2, 3).
+  int detail;
 };
 
 class EventWatch {
