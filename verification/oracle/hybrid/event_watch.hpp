@@ -25,8 +25,9 @@ enum class RootKind { Approach, Landing, LiftOff, StickLimit, SlipStop, OffEdge,
 struct Root {
   RootKind kind;
   std::size_t index;  ///< the pair (Approach) or the active contact (every other kind)
-  /// Landing: the vertex; StickLimit, OffEdge: which side (0, 1); OffCorner: the second's
-  /// corner's side (0, 1) or the first's (2, 3).
+  /// Landing: the vertex; StickLimit: which side (0, 1); OffEdge: which end (0: the start, 1:
+  /// the end; 2, 3: the same, for a vertex armed at that end, watched once past it by the end
+  /// tolerance); OffCorner: the second's corner's side (0, 1) or the first's (2, 3).
   int detail;
 };
 
@@ -34,7 +35,8 @@ class EventWatch {
  public:
   /// Watches every pair of hulls of `world` on different bodies, one of them dynamic, except
   /// pairs of bare segments (no area: they never touch). A vertex within `end_tolerance` [m] of
-  /// an end of its edge is not watched leaving it there. `world` must outlive this.
+  /// an end of its edge is watched leaving it only once that far past it. `world` must outlive
+  /// this.
   EventWatch(const World& world, double end_tolerance);
 
   const std::vector<HullPair>& pairs() const { return pairs_; }
