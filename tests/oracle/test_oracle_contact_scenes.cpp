@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <iomanip>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "check_near.hpp"
 #include "scene/scene.hpp"
 #include "verification/oracle/oracle.hpp"
 
@@ -21,10 +21,11 @@ using gp::verification::OracleOptions;
 using gp::verification::OracleResult;
 using gp::verification::run_oracle;
 
+using gp::test::check_near;
+
 namespace {
 
-constexpr double kRelative = 1e-9;  // what the oracle must achieve against a closed form
-constexpr double kDrift = 1e-12;    // m: how far an active contact may drift off its constraint
+constexpr double kDrift = 1e-12;  // m: how far an active contact may drift off its constraint
 constexpr double kG = 9.81;
 
 gp::Scene shipped(const std::string& name) {
@@ -42,11 +43,6 @@ OracleOptions with(OracleMethod method) {
   OracleOptions options;
   options.method = method;
   return options;
-}
-
-void check_near(double actual, double expected, double scale = 1.0) {
-  INFO(std::setprecision(17) << "actual " << actual << ", expected " << expected);
-  CHECK(std::abs(actual - expected) <= kRelative * std::max(std::abs(expected), scale));
 }
 
 const auto kMethods = {OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk};
