@@ -5,7 +5,6 @@
 // failure), which must end quickly with OracleDomainError.
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <iomanip>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "check_near.hpp"
 #include "engine/scene/scene_space.hpp"
 #include "gamephysics/gamephysics.hpp"
 #include "gamephysics/models/dd/kinetic_energy.hpp"
@@ -26,9 +26,10 @@ using gp::verification::OracleOptions;
 using gp::verification::OracleResult;
 using gp::verification::run_oracle;
 
+using gp::test::check_near;
+
 namespace {
 
-constexpr double kRelative = 1e-9;  // what the oracle must achieve against a closed form
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 OracleOptions tight(OracleMethod method, double tolerance = 1e-12) {
@@ -43,13 +44,6 @@ OracleOptions tight(OracleMethod method, double tolerance = 1e-12) {
 // of the orbit, or of a fall sharpening as 1/r², the error adds up to about 1e3 rtol, so the
 // scenes with gravitation ask for 1e-14.
 constexpr double kGravitationTolerance = 1e-14;
-
-// |actual − expected| ≤ 1e-9 · max(|expected|, scale): relative, except for quantities that are
-// (near) zero, which are compared with the scale of the problem.
-void check_near(double actual, double expected, double scale = 1.0) {
-  INFO(std::setprecision(17) << "actual " << actual << ", expected " << expected);
-  CHECK(std::abs(actual - expected) <= kRelative * std::max(std::abs(expected), scale));
-}
 
 gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velocity, double radius,
                  double mass, double restitution) {
@@ -509,7 +503,7 @@ TEST_CASE(
       INFO("impact " << k << ", arriving at " << arrival << " m/s");
       const double expected = t1 * (3.0 - std::pow(2.0, 1.0 - static_cast<double>(k)));
       CHECK(std::abs(r.events[k].time - expected) <=
-            std::max(kRelative * expected, 1e-11 / arrival));
+            std::max(gp::test::kOracleRelative * expected, 1e-11 / arrival));
     }
     check_near(r.states[0][1].position.y(), kBallRadius);
     check_near(r.states[0][1].velocity.y(), 0.0);

@@ -1,10 +1,11 @@
 // The oracle's contact geometry (verification/oracle/geometry) on cases worked by hand: a box
 // resting flat on another, a box on its corner, two discs, a capsule sunk into a line, two crossing
-// lines and two overlapping boxes.
+// lines, a triangle sunk deep into a box's corner and two overlapping boxes.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "verification/oracle/geometry/contact_geometry.hpp"
 #include "verification/oracle/model/world.hpp"
@@ -89,6 +90,29 @@ TEST_CASE("Oracle contacts: cases worked by hand", "[oracle][geometry]") {
                                                   {{0.0, 0.0}, 0.0}, kMargin);
     CHECK(contact.points.empty());
     CHECK(contact.distance == Approx(-0.5).epsilon(1e-15));
+  }
+  SECTION("a triangle sunk 0.9 m into a box's corner: the corner's foot is off the edge") {
+    // The box's top y = 0 is the reference edge (the triangle's deepest vertex (1, −0.9) sets the
+    // distance); the triangle's bottom edge from W = (1, −0.9) to (2.1, −0.6), direction
+    // d = (1.1, 0.3), outward normal m = (0.3, −1.1)/√1.3, crosses the box's side x = 2. The
+    // box's corner R = (2, 0) lies inside the triangle, and its foot on that edge's line,
+    // (R − W)·d / |d|² = 1.37 / 1.3, falls off the edge's end: a deep overlap, whose depth at R
+    // is still (R − W)·m = −0.69/√1.3, with the point R − gap·m / 2 (normal −m from the box).
+    const std::vector<Vec2> triangle{{1.0, -0.9}, {2.1, -0.6}, {2.0, 1.0}};
+    const auto contact =
+        oracle::contact_geometry(hull(Shape::polygon(triangle)), {{0, 0}, 0.0},
+                                 hull(Shape::box(4, 2)), {{0.0, -1.0}, 0.0}, kMargin);
+    CHECK(contact.distance == Approx(-0.9).epsilon(1e-15));
+    CHECK(near(contact.normal, {0.0, 1.0}));
+    REQUIRE(contact.points.size() == 2);
+    const auto& corner = contact.points[1];
+    CHECK(corner.feature.kind == Kind::EdgeVertex);
+    CHECK(corner.separation == Approx(-0.69 / std::sqrt(1.3)).epsilon(1e-15));
+    CHECK(corner.point.x() == Approx(2.0 + 0.345 * 0.3 / 1.3).epsilon(1e-15));
+    CHECK(corner.point.y() == Approx(-0.345 * 1.1 / 1.3).epsilon(1e-15));
+    // The triangle's deepest vertex against the top: 0.9 m deep, midway at y = −0.45.
+    CHECK(contact.points[0].separation == Approx(-0.9).epsilon(1e-15));
+    CHECK(near(contact.points[0].point, {1.0, -0.45}));
   }
   SECTION("two 2 m boxes overlapping 0.5 m in x and 1.8 m in y: depth 0.5 m along x") {
     const auto box = hull(Shape::box(2, 2));

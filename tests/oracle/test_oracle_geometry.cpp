@@ -255,9 +255,10 @@ void compare(const Pair& p, Disagreement& d) {
            << manifold.points[k].depth;
   }
   INFO(detail.str());
-  // The engine may keep one point more: a clipped point at a reference corner whose foot on the
-  // incident edge's line falls off that edge (deep overlaps, steep edges), which the oracle does
-  // not report (contact_geometry); every point the oracle reports must be the engine's too.
+  // The engine may keep one point more: a clipped point at a reference corner outside the
+  // incident core whose foot on the incident edge's line falls off that edge (steep edges), which
+  // the oracle does not report (contact_geometry); every point the oracle reports must be the
+  // engine's too.
   if (manifold.count > static_cast<int>(expected.size())) ++d.engine_extra;
   CHECK(manifold.count >= static_cast<int>(expected.size()));
   if (manifold.count < static_cast<int>(expected.size()) || manifold.count == 0) return;

@@ -5,7 +5,9 @@
 #include <cstdlib>
 #include <new>
 
-namespace gp::verification {
+namespace gp::oracle {
+
+using verification::OracleOptions;
 
 namespace {
 
@@ -76,4 +78,4 @@ long ArkodeSolver::steps() const {
   return steps_before_restart_ + count;
 }
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -6,14 +6,15 @@
 
 #include "verification/oracle/ode_solver.hpp"
 
-namespace gp::verification {
+namespace gp::oracle {
 
 class ArkodeSolver final : public OdeSolver {
  public:
   /// ERKStep with the Fehlberg 13(7)8 table: 13 stages, order 8 with an embedded order-7 error
   /// estimate. Verner's 8(5)6 (order 6) drifted 6e-9 m from the closed-form orbit in 7 s at
   /// rtol 1e-14, Fehlberg 9e-14 m; event times still agree with CVODE to 1e-11 s.
-  ArkodeSolver(const OracleOptions& options, OdeProblem& problem, double t0, const double* y0);
+  ArkodeSolver(const verification::OracleOptions& options, OdeProblem& problem, double t0,
+               const double* y0);
 
   Stop advance(double t_stop, double& t) override;
   void restart(double t) override;
@@ -32,4 +33,4 @@ class ArkodeSolver final : public OdeSolver {
   void arm_roots();
 };
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <new>
 
-namespace gp::verification {
+namespace gp::oracle {
+
+using verification::OracleOptions;
 
 void CvodeSolver::FreeMemory::operator()(void* memory) const {
   CVodeFree(&memory);
@@ -98,4 +100,4 @@ long CvodeSolver::steps() const {
   return steps_before_restart_ + count;
 }
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

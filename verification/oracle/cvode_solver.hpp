@@ -11,7 +11,7 @@
 
 #include "verification/oracle/ode_solver.hpp"
 
-namespace gp::verification {
+namespace gp::oracle {
 
 class CvodeSolver final : public OdeSolver {
  public:
@@ -24,8 +24,8 @@ class CvodeSolver final : public OdeSolver {
     Bdf,
   };
 
-  CvodeSolver(Family family, const OracleOptions& options, OdeProblem& problem, double t0,
-              const double* y0);
+  CvodeSolver(Family family, const verification::OracleOptions& options, OdeProblem& problem,
+              double t0, const double* y0);
 
   Stop advance(double t_stop, double& t) override;
   void restart(double t) override;
@@ -59,4 +59,4 @@ class CvodeSolver final : public OdeSolver {
   void arm_roots();
 };
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-namespace gp::verification {
+namespace gp::oracle {
 
 namespace {
 
@@ -61,4 +61,4 @@ void OdeProblem::rethrow_pending() {
   if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
 }
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -10,13 +10,12 @@
 #include "verification/oracle/hybrid/event_watch.hpp"
 #include "verification/oracle/hybrid/hybrid_system.hpp"
 
-namespace gp::verification {
+namespace gp::oracle {
 
 class OdeProblem {
  public:
   /// Both must outlive the problem.
-  OdeProblem(oracle::HybridSystem& system, oracle::EventWatch& watch)
-      : system_(system), watch_(watch) {}
+  OdeProblem(HybridSystem& system, EventWatch& watch) : system_(system), watch_(watch) {}
 
   std::size_t size() const { return system_.size(); }
   /// The number of root functions, as the watch is armed now.
@@ -38,10 +37,10 @@ class OdeProblem {
   void rethrow_pending();
 
  private:
-  oracle::HybridSystem& system_;
-  oracle::EventWatch& watch_;
-  oracle::Snapshot snapshot_;  // scratch for roots()
+  HybridSystem& system_;
+  EventWatch& watch_;
+  Snapshot snapshot_;  // scratch for roots()
   std::exception_ptr pending_;
 };
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

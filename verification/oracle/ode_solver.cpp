@@ -8,7 +8,11 @@
 #include "verification/oracle/arkode_solver.hpp"
 #include "verification/oracle/cvode_solver.hpp"
 
-namespace gp::verification {
+namespace gp::oracle {
+
+using verification::OracleDomainError;
+using verification::OracleMethod;
+using verification::OracleOptions;
 
 OdeSolver::OdeSolver(OdeProblem& problem, const double* y0, std::string name, long max_steps)
     : problem_(problem),
@@ -64,4 +68,4 @@ std::unique_ptr<OdeSolver> make_ode_solver(const OracleOptions& options, OdeProb
   throw std::invalid_argument("unknown oracle method");
 }
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

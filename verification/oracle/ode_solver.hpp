@@ -11,7 +11,7 @@
 #include "verification/oracle/oracle.hpp"
 #include "verification/oracle/sundials_handles.hpp"
 
-namespace gp::verification {
+namespace gp::oracle {
 
 class OdeSolver {
  public:
@@ -82,7 +82,7 @@ class OdeSolver {
 };
 
 /// The solver of options.method with options' tolerances and step limit, at t0 [s] from y0.
-std::unique_ptr<OdeSolver> make_ode_solver(const OracleOptions& options, OdeProblem& problem,
-                                           double t0, const double* y0);
+std::unique_ptr<OdeSolver> make_ode_solver(const verification::OracleOptions& options,
+                                           OdeProblem& problem, double t0, const double* y0);
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -91,7 +91,7 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
   oracle::HybridSystem system(world);
   oracle::EventWatch watch(world, options.contact_tolerance);
   oracle::ContactEvents contacts(system, watch, options);
-  ZenoGuard zeno(options);
+  oracle::ZenoGuard zeno(options);
   OracleResult result;
   result.times.assign(output_times.begin(), output_times.end());
   std::vector<oracle::Motion> motions(system.states().body_count());
@@ -111,14 +111,14 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
     return result;
   }
 
-  OdeProblem problem(system, watch);
-  const auto solver = make_ode_solver(options, problem, t, y.data());
+  oracle::OdeProblem problem(system, watch);
+  const auto solver = oracle::make_ode_solver(options, problem, t, y.data());
   oracle::Snapshot snapshot;
   for (double t_out : output_times) {
     while (!reached(t, t_out)) {
       system.evaluate(t, solver->values(), snapshot);
       const double t_stop = std::min(t_out, t + std::max(watch.horizon(snapshot), kLeastStep * t));
-      if (solver->advance(t_stop, t) == OdeSolver::Stop::Reached) {
+      if (solver->advance(t_stop, t) == oracle::OdeSolver::Stop::Reached) {
         if (!solver->projects() && !system.contacts().empty()) {
           system.project(t, solver->values());
           solver->restart(t);

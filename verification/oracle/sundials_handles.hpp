@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <type_traits>
 
-namespace gp::verification {
+namespace gp::oracle {
 
 // The oracle hands SUNDIALS arrays of double.
 static_assert(std::is_same_v<sunrealtype, double>, "SUNDIALS must be built with double precision");
@@ -50,4 +50,4 @@ class SerialVector {
   N_Vector vector_;
 };
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -2,7 +2,11 @@
 
 #include <string>
 
-namespace gp::verification {
+namespace gp::oracle {
+
+using verification::message_number;
+using verification::OracleDomainError;
+using verification::OracleOptions;
 
 ZenoGuard::ZenoGuard(const OracleOptions& options)
     : max_events_(options.max_events),
@@ -25,4 +29,4 @@ void ZenoGuard::record(double t, const std::string& what) {
   }
 }
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

@@ -10,11 +10,11 @@
 
 #include "verification/oracle/oracle.hpp"
 
-namespace gp::verification {
+namespace gp::oracle {
 
 class ZenoGuard {
  public:
-  explicit ZenoGuard(const OracleOptions& options);
+  explicit ZenoGuard(const verification::OracleOptions& options);
 
   /// Counts an event at time t [s] (times non-decreasing), `what` naming it for the message
   /// ("an impact of bodies 'ball' and 'ground'"). Throws OracleDomainError when there have been
@@ -29,4 +29,4 @@ class ZenoGuard {
   std::deque<double> recent_;  // the times of the last zeno_events events
 };
 
-}  // namespace gp::verification
+}  // namespace gp::oracle

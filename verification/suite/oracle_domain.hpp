@@ -16,7 +16,8 @@
 
 namespace gp::verification {
 
-/// Why the oracle does not run the shipped scene `name`, or nothing when it is in the domain.
+/// Why the oracle does not run the shipped scene or hard case `name`, or nothing when it is in
+/// the domain.
 std::optional<std::string_view> outside_oracle_domain(std::string_view name);
 
 /// The options of a reference solution: rtol = atol = 1e-12, and 1e-14 under pairwise

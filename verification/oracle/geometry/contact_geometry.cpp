@@ -204,9 +204,12 @@ std::vector<Feature> clipped_features(const Feature& main, const PlacedHull& a,
                           : Feature{Kind::EdgeVertex, edge, vertex};
   };
   // A reference end against the incident edge, when its foot on that edge's line lies on the
-  // edge (else the gap would measure to a line the hull does not reach there).
+  // edge, or when the end is inside the incident core (a deep overlap), where the line measures
+  // its depth. Outside the core with its foot off the edge, the gap would measure to a line the
+  // hull does not reach there.
   const auto reference_vertex_on_incident = [&](int vertex, std::vector<Feature>& features) {
-    if (!projects_inside(reference.vertices[vertex], incident, incident_edge)) return;
+    const Vec2& point = reference.vertices[vertex];
+    if (!projects_inside(point, incident, incident_edge) && !in_core(point, incident)) return;
     features.push_back(reference_is_b ? Feature{Kind::EdgeVertex, incident_edge, vertex}
                                       : Feature{Kind::VertexEdge, vertex, incident_edge});
   };

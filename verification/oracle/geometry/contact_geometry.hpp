@@ -37,8 +37,9 @@ double signed_distance(const Hull& a, const Pose& pa, const Hull& b, const Pose&
 /// sets the distance; the incident edge is the other hull's edge most nearly opposite it. Its
 /// ends inside the reference edge's side planes are vertex–edge points against the reference
 /// edge; where a side plane cuts it, the reference edge's end is a vertex–edge point against the
-/// incident edge, unless its foot on that edge's line falls off the edge (steep or deeply
-/// overlapping edges), where the vertex–edge gap would measure to a line the hull does not reach.
+/// incident edge, unless its foot on that edge's line falls off the edge while the reference end
+/// is outside the incident core (steep edges), where the vertex–edge gap would measure to a line
+/// the hull does not reach; inside the core (a deep overlap) the line measures its depth.
 ContactGeometry contact_geometry(const Hull& a, const Pose& pa, const Hull& b, const Pose& pb,
                                  double margin);
 

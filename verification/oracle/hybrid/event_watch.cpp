@@ -122,13 +122,13 @@ void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Mo
       roots_.push_back({RootKind::SlipStop, i, 0});
     }
     if (c.on_edge) {
-      // A vertex at an end of its edge (a box on another, corner on corner) is not watched
-      // leaving it there: the root function would start at zero and chatter on round-off.
+      // A vertex at an end of its edge (a box on another, corner on corner) is watched leaving
+      // it only once past it by the tolerance (sides 2, 3): from zero the root function would
+      // chatter on round-off, and unwatched the vertex would ride the edge's line beyond it.
       const ContactKinematics k = contact_kinematics(c, motions[c.first], motions[c.second]);
-      if (k.along_edge > end_tolerance_) roots_.push_back({RootKind::OffEdge, i, 0});
-      if (k.edge_length - k.along_edge > end_tolerance_) {
-        roots_.push_back({RootKind::OffEdge, i, 1});
-      }
+      roots_.push_back({RootKind::OffEdge, i, k.along_edge > end_tolerance_ ? 0 : 2});
+      roots_.push_back(
+          {RootKind::OffEdge, i, k.edge_length - k.along_edge > end_tolerance_ ? 1 : 3});
       const auto& vertices = world_.bodies[c.first].hulls[c.first_hull].vertices;
       for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
         const bool active = std::any_of(contacts.begin(), contacts.end(), [&](const auto& o) {
@@ -140,11 +140,12 @@ void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Mo
         }
       }
     } else {
+      // Corner on corner: the normal must stay inside both corners' cones, so both are watched.
+      const bool second_corner = world_.bodies[c.second].hulls[c.second_hull].vertices.size() >= 2;
+      const bool first_corner = world_.bodies[c.first].hulls[c.first_hull].vertices.size() >= 2;
       for (int side = 0; side < 2; ++side) {
-        if (world_.bodies[c.first].hulls[c.first_hull].vertices.size() >= 2 ||
-            world_.bodies[c.second].hulls[c.second_hull].vertices.size() >= 2) {
-          roots_.push_back({RootKind::OffCorner, i, side});
-        }
+        if (second_corner) roots_.push_back({RootKind::OffCorner, i, side});
+        if (first_corner) roots_.push_back({RootKind::OffCorner, i, 2 + side});
       }
     }
   }
@@ -179,19 +180,20 @@ void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> cont
         g[r] = c.slip_sign * k.slip;
         break;
       case RootKind::OffEdge:
-        g[r] = root.detail == 0 ? k.along_edge : k.edge_length - k.along_edge;
+        g[r] = (root.detail % 2 == 0 ? k.along_edge : k.edge_length - k.along_edge) +
+               (root.detail >= 2 ? end_tolerance_ : 0.0);
         break;
       case RootKind::Landing:
         g[r] = at_vertex(world_, c, root.detail, s.motions).gap;
         break;
       case RootKind::OffCorner: {
-        // The corner is the second's vertex (its outward normal is n) or else the first's (−n).
-        const Hull& second = world_.bodies[c.second].hulls[c.second_hull];
-        g[r] = second.vertices.size() >= 2
-                   ? inside_corner(second, c.second_feature, s.motions[c.second], k.normal,
-                                   root.detail)
+        // Sides 0, 1 are of the second's corner (its outward normal is n), 2, 3 of the first's
+        // (−n).
+        g[r] = root.detail < 2
+                   ? inside_corner(world_.bodies[c.second].hulls[c.second_hull], c.second_feature,
+                                   s.motions[c.second], k.normal, root.detail)
                    : inside_corner(world_.bodies[c.first].hulls[c.first_hull], c.first_vertex,
-                                   s.motions[c.first], -k.normal, root.detail);
+                                   s.motions[c.first], -k.normal, root.detail - 2);
         break;
       }
       case RootKind::Approach:

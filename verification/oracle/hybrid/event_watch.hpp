@@ -7,7 +7,8 @@
 //   StickLimit a sticking contact: μ f_n ∓ f_t (friction reaches its bound: stick to slip);
 //   SlipStop   a sliding contact: its slip, signed so that it falls (slip to stick, or reversal);
 //   OffEdge    a vertex on an edge: its distance to either end (it slides off the edge);
-//   OffCorner  a contact at a corner: how far its normal is inside the corner's normal cone.
+//   OffCorner  a contact at a corner: how far its normal is inside the corner's normal cone
+//              (corner on corner: each corner's).
 // The list is rebuilt whenever the active contacts change.
 
 #include <cstddef>
@@ -24,14 +25,18 @@ enum class RootKind { Approach, Landing, LiftOff, StickLimit, SlipStop, OffEdge,
 struct Root {
   RootKind kind;
   std::size_t index;  ///< the pair (Approach) or the active contact (every other kind)
-  int detail;         ///< Landing: the vertex; StickLimit, OffEdge, OffCorner: which side (0, 1)
+  /// Landing: the vertex; StickLimit: which side (0, 1); OffEdge: which end (0: the start, 1:
+  /// the end; 2, 3: the same, for a vertex armed at that end, watched once past it by the end
+  /// tolerance); OffCorner: the second's corner's side (0, 1) or the first's (2, 3).
+  int detail;
 };
 
 class EventWatch {
  public:
   /// Watches every pair of hulls of `world` on different bodies, one of them dynamic, except
   /// pairs of bare segments (no area: they never touch). A vertex within `end_tolerance` [m] of
-  /// an end of its edge is not watched leaving it there. `world` must outlive this.
+  /// an end of its edge is watched leaving it only once that far past it. `world` must outlive
+  /// this.
   EventWatch(const World& world, double end_tolerance);
 
   const std::vector<HullPair>& pairs() const { return pairs_; }
