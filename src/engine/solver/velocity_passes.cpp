@@ -287,8 +287,13 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
   }
 }
 
-double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
-                          MotionState& s) {
+namespace {
+
+// solve_contact_once. Out of line, so that both sizes of solve_contact inline into it: inlined
+// into the passes' loop instead, solve_contact<2> is not, and pyramid20 costs 3% more
+// instructions (callgrind).
+[[gnu::noinline]] double solve_once(ContactSet& contacts, const Contact& c,
+                                    const BodyInertia& inertia, MotionState& s) {
   PairMotion m(c, inertia, s);
   const std::span<ContactPointState> points = contacts.points(c);
   const double impulse_change = c.count() == 1 ? solve_contact(contacts, c, points.first<1>(), m)
@@ -297,12 +302,19 @@ double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyIner
   return impulse_change * (m.inverse_mass_a + m.inverse_mass_b);
 }
 
+}  // namespace
+
+double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyInertia& inertia,
+                          MotionState& s) {
+  return solve_once(contacts, c, inertia, s);
+}
+
 int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s) {
   for (int i = 0; i < iterations;) {
     double largest_change = 0.0;
     for (const Contact& c : contacts)
-      largest_change = std::max(largest_change, solve_contact_once(contacts, c, inertia, s));
+      largest_change = std::max(largest_change, solve_once(contacts, c, inertia, s));
     ++i;
     // A pass that changed the velocities by at most the tolerance leaves the next about as
     // little to do (none at all when it changed nothing).
