@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/scene_options.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"GamePhysics: a verification-driven 2D rigid-body physics library (SRS-traced)"};
@@ -40,56 +41,36 @@ int main(int argc, char** argv) {
   gp::cli::SimulateOptions simulation;
   auto* simulate =
       app.add_subcommand("simulate", "Run a scene file (docs/scene-format.md), write CSV");
-  simulate->add_option("scene", simulation.scene, "Scene file (JSON)")->required();
+  gp::cli::add_scene_options(*simulate, simulation.scene, simulation.overrides,
+                             gp::cli::kEveryOverride);
   simulate->add_option("--out", simulation.out, "Trajectory CSV to write");
-  simulate->add_option("--integrator", simulation.overrides.integrator,
-                       "symplectic_euler, velocity_verlet or rk4 (overrides the file)");
-  simulate->add_option("--dt", simulation.overrides.dt, "Time step [s] (overrides the file)");
-  simulate->add_option("--duration", simulation.overrides.duration,
-                       "Simulated time [s] (overrides the file)");
-  simulate->add_option("--output-dt", simulation.overrides.output_dt,
-                       "Interval between output rows [s] (overrides the file)");
   simulate->add_flag("--explain", simulation.explain,
                      "Print the pipeline of a step (runs nothing unless --out is given)");
 
   gp::cli::OracleCommandOptions oracle_run;
   auto* oracle = app.add_subcommand(
       "oracle", "Integrate a scene file with the SUNDIALS oracle, write CSV like simulate");
-  oracle->add_option("scene", oracle_run.scene, "Scene file (JSON)")->required();
+  gp::cli::add_scene_options(*oracle, oracle_run.scene, oracle_run.overrides,
+                             gp::cli::kDuration | gp::cli::kOutputInterval);
   oracle->add_option("--out", oracle_run.out, "Trajectory CSV to write")->required();
   oracle->add_option("--events", oracle_run.events, "Impact log CSV to write");
   oracle->add_option("--method", oracle_run.method,
                      "cvode-adams (default), cvode-bdf or arkode-erk");
   oracle->add_option("--rtol", oracle_run.rtol, "Relative tolerance, > 0 (default 1e-10)");
   oracle->add_option("--atol", oracle_run.atol, "Absolute tolerance, > 0 (default 1e-10)");
-  oracle->add_option("--duration", oracle_run.overrides.duration,
-                     "Simulated time [s] (overrides the file)");
-  oracle->add_option("--output-dt", oracle_run.overrides.output_dt,
-                     "Interval between output rows [s] (overrides the file)");
 
   gp::cli::PeerOptions peer_run;
   auto* peer = app.add_subcommand("peer", "Run a scene file in Chipmunk2D or Box2D, write CSV");
-  peer->add_option("scene", peer_run.scene, "Scene file (JSON)")->required();
+  gp::cli::add_scene_options(*peer, peer_run.scene, peer_run.overrides,
+                             gp::cli::kStep | gp::cli::kDuration | gp::cli::kOutputInterval);
   peer->add_option("--engine", peer_run.engine, "chipmunk or box2d")->required();
   peer->add_option("--out", peer_run.out, "Trajectory CSV to write")->required();
-  peer->add_option("--dt", peer_run.overrides.dt, "Time step [s] (overrides the file)");
-  peer->add_option("--duration", peer_run.overrides.duration,
-                   "Simulated time [s] (overrides the file)");
-  peer->add_option("--output-dt", peer_run.overrides.output_dt,
-                   "Interval between output rows [s] (overrides the file)");
 
   gp::cli::ViewOptions view_run;
   auto* view = app.add_subcommand(
       "view", "Run a scene file, write one self-contained HTML page that plays it back");
-  view->add_option("scene", view_run.scene, "Scene file (JSON)")->required();
+  gp::cli::add_scene_options(*view, view_run.scene, view_run.overrides, gp::cli::kEveryOverride);
   view->add_option("--out", view_run.out, "HTML page to write")->required();
-  view->add_option("--integrator", view_run.overrides.integrator,
-                   "symplectic_euler, velocity_verlet or rk4 (overrides the file)");
-  view->add_option("--dt", view_run.overrides.dt, "Time step [s] (overrides the file)");
-  view->add_option("--duration", view_run.overrides.duration,
-                   "Simulated time [s] (overrides the file)");
-  view->add_option("--output-dt", view_run.overrides.output_dt,
-                   "Interval between frames [s] (overrides the file)");
   view->add_flag("--oracle", view_run.oracle, "Overlay the SUNDIALS oracle's solution");
   view->add_option("--audit", view_run.audit,
                    "The audit page as the page links to it (e.g. audit.html beside it): each SRS "
