@@ -11,6 +11,15 @@
 
 namespace gp {
 
+/// The path a body follows over a step of h under a constant acceleration a, as an integrator
+/// takes it.
+enum class PathShape {
+  /// x₀ + v₀τ + ½aτ²: the exact motion (velocity Verlet, RK4).
+  kParabola,
+  /// x₀ + (v₀ + ah)τ: the straight line at the step's end velocity (symplectic Euler).
+  kEndVelocity,
+};
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
@@ -24,9 +33,9 @@ class Integrator {
   /// velocity Verlet, RK4). With this share a body resting on the ground stays exactly still.
   virtual double impulse_position_share() const = 0;
 
-  /// True when a step under constant accelerations lands exactly on the ballistic path
-  /// x₀ + v₀h + ½ah², so that a step may start from any point of that path (local impacts).
-  virtual bool exact_for_constant_acceleration() const = 0;
+  /// The path a step under constant accelerations lands on exactly, so that a step may start
+  /// from any point of it (local impacts).
+  virtual PathShape path_under_constant_acceleration() const = 0;
 };
 
 std::unique_ptr<Integrator> make_integrator(IntegratorKind kind);

@@ -68,7 +68,7 @@ class SymplecticEuler final : public Integrator {
     });
   }
   double impulse_position_share() const override { return 1.0; }
-  bool exact_for_constant_acceleration() const override { return false; }
+  PathShape path_under_constant_acceleration() const override { return PathShape::kEndVelocity; }
 
  private:
   Accelerations a_;
@@ -99,7 +99,7 @@ class VelocityVerlet final : public Integrator {
     }
   }
   double impulse_position_share() const override { return 0.5; }
-  bool exact_for_constant_acceleration() const override { return true; }
+  PathShape path_under_constant_acceleration() const override { return PathShape::kParabola; }
 
  private:
   Accelerations a0_, a1_;
@@ -159,7 +159,7 @@ class RungeKutta4 final : public Integrator {
     }
   }
   double impulse_position_share() const override { return 0.5; }
-  bool exact_for_constant_acceleration() const override { return true; }
+  PathShape path_under_constant_acceleration() const override { return PathShape::kParabola; }
 
  private:
   // The slopes of one stage: its velocities (the slope of x and ϕ) and accelerations.

@@ -22,23 +22,37 @@
 namespace gp {
 
 Vec2 Ballistic::position(BodyId body, double tau) const {
+  // Each path moves at one velocity over τ: the mean on the parabola, the line's own on the line.
+  const double at = shape == PathShape::kParabola ? tau / 2 : std::max(tau, 0.0);
   return dd::displaced_position(start.position[body],
-                                dd::displacement_from_velocity(velocity(body, tau / 2), tau));
+                                dd::displacement_from_velocity(velocity(body, at), tau));
 }
 
 double Ballistic::angle(BodyId body, double tau) const {
-  return dd::rotated_orientation(start.angle[body], dd::angular_displacement_from_velocity(
-                                                        angular_velocity(body, tau / 2), tau));
+  const double at = shape == PathShape::kParabola ? tau / 2 : std::max(tau, 0.0);
+  return dd::rotated_orientation(
+      start.angle[body], dd::angular_displacement_from_velocity(angular_velocity(body, at), tau));
 }
 
+namespace {
+
+// How long the acceleration has acted on the velocity after τ [s] along a path of `shape`.
+double accelerated_for(PathShape shape, double tau, double step) {
+  if (shape == PathShape::kParabola || tau == 0.0) return tau;
+  return tau > 0.0 ? step : -step;
+}
+
+}  // namespace
+
 Vec2 Ballistic::velocity(BodyId body, double tau) const {
-  return start.velocity[body] +
-         dd::velocity_change_from_acceleration(acceleration.linear(body), tau);
+  return start.velocity[body] + dd::velocity_change_from_acceleration(
+                                    acceleration.linear(body), accelerated_for(shape, tau, step));
 }
 
 double Ballistic::angular_velocity(BodyId body, double tau) const {
   return start.angular_velocity[body] +
-         dd::angular_velocity_change_from_acceleration(acceleration.angular(body), tau);
+         dd::angular_velocity_change_from_acceleration(acceleration.angular(body),
+                                                       accelerated_for(shape, tau, step));
 }
 
 double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Ballistic& m,

@@ -10,6 +10,7 @@
 #include "engine/collision/body_shapes.hpp"
 #include "engine/collision/broadphase.hpp"
 #include "engine/dynamics/force_model.hpp"
+#include "engine/dynamics/integrator.hpp"
 #include "engine/impact.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
@@ -17,14 +18,20 @@ namespace gp {
 
 struct StepContext;
 
-/// Motion of a body over a step under its accelerations at the start of the step: exact for
-/// constant accelerations, and what the time-of-impact search follows.
+/// Motion of a body over a step of h under its accelerations at the start of the step, along the
+/// path the integrator takes (exact for constant accelerations), which the time-of-impact search
+/// follows. On the straight path of symplectic Euler, the velocity after τ > 0 is the step's end
+/// velocity v₀ + ah, and followed back (τ < 0) from a state moving at v it is v − ah: the start
+/// from which a step passes through that state.
 struct Ballistic {
-  Ballistic(const MotionState& from, StepAccelerations accelerations)
-      : start(from), acceleration(accelerations) {}
+  Ballistic(const MotionState& from, StepAccelerations accelerations,
+            PathShape path = PathShape::kParabola, double h = 0.0)
+      : start(from), acceleration(accelerations), shape(path), step(h) {}
 
   const MotionState& start;
   StepAccelerations acceleration;
+  PathShape shape;
+  double step;  ///< s, the step's h (for the straight path)
 
   /// Transform of `body` after τ [s].
   Vec2 position(BodyId body, double tau) const;

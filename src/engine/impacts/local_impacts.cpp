@@ -105,18 +105,16 @@ void LocalImpacts::drop_contacts_with_impacts(StepContext& ctx) const {
   });
 }
 
-void LocalImpacts::follow_path(BodyId b, double tau, MotionState& start,
-                               const StepAccelerations& acceleration) const {
-  const Ballistic path{start, acceleration};
-  start.set(b, {path.position(b, tau), path.angle(b, tau), path.velocity(b, tau),
-                path.angular_velocity(b, tau)});
+void LocalImpacts::follow_path(BodyId b, double tau, StepContext& ctx) const {
+  const Ballistic& path = *ctx.motion;
+  ctx.start.set(b, {path.position(b, tau), path.angle(b, tau), path.velocity(b, tau),
+                    path.angular_velocity(b, tau)});
 }
 
 bool LocalImpacts::resolve(StepContext& ctx) {
   if (pending_.empty()) return true;
   const double h = ctx.h;
   MotionState& start = ctx.start;
-  const StepAccelerations& acceleration = ctx.motion->acceleration;
   const double same_time = simultaneity(h);
   while (!pending_.empty() && ctx.impacts_allowed()) {
     const double tau =
@@ -143,7 +141,7 @@ bool LocalImpacts::resolve(StepContext& ctx) {
             continue;
           held_.push_back({b, start.of(b)});
         }
-        follow_path(b, tau, start, acceleration);
+        follow_path(b, tau, ctx);
       }
     }
     std::sort(group_.begin(), group_.end());
@@ -151,7 +149,7 @@ bool LocalImpacts::resolve(StepContext& ctx) {
     ++ctx.impacts_this_step;
     // Under constant accelerations the path through the state just after the impact, followed
     // back by τ, starts where the body must start to pass through that state.
-    for (BodyId b : changed_) follow_path(b, -tau, start, acceleration);
+    for (BodyId b : changed_) follow_path(b, -tau, ctx);
     for (const Held& x : held_) start.set(x.body, x.state);
     std::erase_if(pending_, [this, &ctx](const Pending& e) {
       return changed(ctx.shapes[e.pair.first]) || changed(ctx.shapes[e.pair.second]);

@@ -70,8 +70,7 @@ class LocalImpacts {
   /// Drops from the context's contacts every contact of a dynamic body whose role is kWithImpact.
   void drop_contacts_with_impacts(StepContext& ctx) const;
   /// Moves body b in `start` along its ballistic path from there by τ [s] (back for τ < 0).
-  void follow_path(BodyId b, double tau, MotionState& start,
-                   const StepAccelerations& acceleration) const;
+  void follow_path(BodyId b, double tau, StepContext& ctx) const;
   /// Finds the impacts from τ on of the shapes of the changed bodies (changed_), whose paths
   /// have changed, having placed them at τ in world_start and at h in world_end; false when one
   /// of them could pass through a body of the contact solver.

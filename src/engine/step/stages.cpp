@@ -34,12 +34,13 @@ std::string count(std::size_t n, const std::string& what) {
 // The ballistic paths over the sub-step under the accelerations at its start, the shapes placed at
 // both ends of them, and the candidate pairs of the boxes swept between.
 bool sweep(StepContext& c, StepMechanisms& m) {
+  const PathShape shape = c.integrator->path_under_constant_acceleration();
   if (c.forces.constant()) {
-    c.motion.emplace(c.start, StepAccelerations(c.forces, c.dynamic));
+    c.motion.emplace(c.start, StepAccelerations(c.forces, c.dynamic), shape, c.h);
   } else {
     c.varying_acceleration.resize(c.state.position.size());
     c.forces.evaluate(c.time, c.start, c.varying_acceleration);
-    c.motion.emplace(c.start, StepAccelerations(c.varying_acceleration));
+    c.motion.emplace(c.start, StepAccelerations(c.varying_acceleration), shape, c.h);
   }
   c.shapes.place(c.start.position, c.start.angle, c.world_start);
   // Boxes swept along the ballistic path catch a fast body wherever it is during the step. The
@@ -255,8 +256,9 @@ std::span<const Stage> step_stages() {
 }
 
 bool runs_local_pass(const StepContext& c) {
-  // Local impacts need ballistic paths that the integrator follows exactly.
-  return c.collides && c.forces.constant() && c.integrator->exact_for_constant_acceleration();
+  // Local impacts need paths that the integrator follows exactly: each integrator does, under
+  // constant forces (PathShape).
+  return c.collides && c.forces.constant();
 }
 
 }  // namespace gp
