@@ -217,6 +217,9 @@ def verify_rows():
                                  r"^position (\S+) m"),
         "readme.ball.collision_time": (accuracy, "bouncing_ball, velocity_verlet, dt = 0.0167 s",
                                        r"t_c (\S+) s"),
+        "readme.ball.oracle_error": (
+            accuracy, "bouncing_ball: oracle's own error, rtol = atol = 1e-12 against 1e-14",
+            r"^position (\S+) m"),
         "readme.projectile.verlet": (accuracy, "projectile, velocity_verlet, dt = 0.01 s",
                                      r"^position (\S+) m"),
         "readme.projectile.rk4": (accuracy, "projectile, rk4, dt = 0.01 s", r"^position (\S+) m"),
