@@ -248,6 +248,7 @@ test("the viewer overlays the closed form of the motion where the scene has one"
       const forms = await page.evaluate(() => window.gp.closedForms());
       const times = await page.evaluate(() => window.gp.times());
       assert.equal(await page.isVisible("#motion-plot"), expected.length > 0, `${name}: the plot`);
+      assert.equal(await page.isVisible("#show-closed-form"), expected.length > 0, `${name}: the layer`);
       if (expected.length > 0) {
         const labels = await page.evaluate(() => window.gp.labels("motion-plot"));
         assert.ok(labels.includes("closed form (dashed)"), `${name}: legend ${labels}`);

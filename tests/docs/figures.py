@@ -6,11 +6,13 @@ checked by ./run.sh after the full verify). Each computation here is independent
 own measurement code: it reads the CSV that `simulate` and `oracle` write and compares with the
 closed form computed from the scene file.
 """
+import atexit
 import csv
 import json
 import math
 import pathlib
 import re
+import shutil
 import subprocess
 import tempfile
 
@@ -21,6 +23,7 @@ class Runner:
     def __init__(self, root, binary):
         self.root, self.binary = pathlib.Path(root), pathlib.Path(binary)
         self.folder = pathlib.Path(tempfile.mkdtemp(prefix="gp_figures_"))
+        atexit.register(shutil.rmtree, self.folder, ignore_errors=True)
         self.cache = {}
 
     def scene(self, name, **patch):
@@ -276,7 +279,8 @@ def registry():
             lambda r: at(r.simulate("projectile")["projectile"], 1.0)[5]),
         "tutorial.projectile.ke_1s": Computed(
             simulate.format("projectile"),
-            lambda r: kinetic_energy(r.simulate("projectile"), 1.0, 1.0, 0.0)),
+            lambda r: kinetic_energy(r.simulate("projectile"), 1.0,
+                                     r.scene_data("projectile")["bodies"][0]["mass"], 0.0)),
         "tutorial.projectile.y_end": Computed(
             simulate.format("projectile"),
             lambda r: r.simulate("projectile")["projectile"][-1][2]),

@@ -146,6 +146,19 @@
     ctx.fillText(`${Number(scaleBar.metres.toPrecision(1))} m`, x + scaleBar.pixels + 6, y + 2);
   }
 
+  // Each body's whole path by its closed form (the parabola, the circle), dashed, labelled at its end.
+  function drawClosedFormPaths() {
+    const paths = bodies.map((b, i) => [closedForms.find((f) => f.body === i && f.quantity === "x"),
+      closedForms.find((f) => f.body === i && f.quantity === "y")]).filter(([x, y]) => x && y);
+    for (const [x, y] of paths) {
+      ctx.beginPath();
+      times.forEach((t, k) => { const [sx, sy] = toScreen(x.at(t), y.at(t)); if (k === 0) ctx.moveTo(sx, sy); else ctx.lineTo(sx, sy); });
+      ctx.strokeStyle = "rgba(0,0,0,0.55)"; ctx.lineWidth = 1; ctx.setLineDash([5, 4]); ctx.stroke(); ctx.setLineDash([]);
+      const [ex, ey] = toScreen(x.at(times[count - 1]), y.at(times[count - 1]));
+      ctx.fillStyle = "rgba(0,0,0,0.7)"; ctx.font = "11px sans-serif"; ctx.fillText("closed form", ex + 6, ey - 6);
+    }
+  }
+
   let impulseArrows = [];  // those of the last frame drawn, for the tests
   function drawWorld() {
     const k = state.frame;
@@ -163,6 +176,7 @@
         ctx.strokeStyle = rgb(colours[i], 0.4); ctx.lineWidth = 1; ctx.stroke();
       });
     }
+    if (show("show-closed-form")) drawClosedFormPaths();
     bodies.forEach((b, i) => drawBody(i, states[i], false));
     if (data.oracle && show("show-oracle")) {
       bodies.forEach((b, i) => { if (b.type === "dynamic") drawBody(i, data.oracle.states[k][i], true); });
@@ -437,7 +451,7 @@
     `g = ${vec(data.gravity)} m/s²${data.G === null ? "" : `, G = ${fmt(data.G)} m³/(kg·s²)`}, ` +
     `${data.impacts.length} impacts; velocity arrows ${velocityScale > 0 ? fmt(1 / velocityScale * 80) : 0} m/s per 80 px`;
   if (!data.oracle) { $("oracle-layer").style.display = "none"; $("oracle-figure").style.display = "none"; }
-  if (!closedForms.length) $("motion-figure").style.display = "none";
+  if (!closedForms.length) { $("motion-figure").style.display = "none"; $("closed-form-layer").style.display = "none"; }
   const scrub = $("scrub");
   scrub.max = count - 1;
   scrub.addEventListener("input", () => { pause(); setFrame(Number(scrub.value)); });
