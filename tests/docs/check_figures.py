@@ -51,6 +51,10 @@ def main():
     docs = args.docs or [args.root / "README.md", *sorted((args.root / "docs").glob("*.md"))]
     registry = figures.registry()
     run = figures.Runner(args.root, args.bin)
+    if args.report and not (args.report / "report.md").is_file():
+        print(f"error: {args.report / 'report.md'}: no such file (gamephysics verify writes it)",
+              file=sys.stderr)
+        return 2
     report = figures.Report(args.report) if args.report else None
 
     failed, used = False, set()
