@@ -13,8 +13,20 @@ tests_status=0
 build/bin/gamephysics_tests -r junit -o build/test-results.xml > /dev/null || tests_status=$?
 verify_status=0
 build/bin/gamephysics verify --test-results build/test-results.xml "$@" || verify_status=$?
+# The figures of README.md and docs/ against this report (tests/docs/README.md); not after --quick
+# or --out, whose report is not the full one in out/report that they come from.
+figures_status=0
+if [[ " $* " != *" --quick "* && " $* " != *" --out"* ]]; then
+  python3 tests/docs/check_figures.py --root . --bin build/bin/gamephysics --report out/report \
+    > build/figures.txt || figures_status=$?
+  grep -v '^ok' build/figures.txt || true
+fi
 if [ "$tests_status" -ne 0 ]; then
   echo "run.sh: unit tests failed (gamephysics_tests exit $tests_status; see build/test-results.xml)" >&2
+  exit 1
+fi
+if [ "$figures_status" -ne 0 ]; then
+  echo "run.sh: a figure of README.md or docs/ is not what the program gives (build/figures.txt)" >&2
   exit 1
 fi
 exit "$verify_status"

@@ -223,3 +223,50 @@ test("with --audit, the inspector's SRS ids link to their entries on the audit p
     await close();
   }
 });
+
+// The closed forms the page overlays on its plot of the motion, against hand computations from
+// the scene files' numbers: the projectile's x = 10 t, y = 10 t − 4.905 t²; the spinning box's
+// ω = τ t / I = 0.5 t / (1/6) = 3 t; the orbit's heavy body, 0.5 m from the centre of mass at the
+// origin, turning at Ω = √(G (m₁ + m₂) / d³) from (−0.5, 0) (counter-clockwise: its velocity
+// points down). A scene with impacts has none, and no plot of it.
+test("the viewer overlays the closed form of the motion where the scene has one", async () => {
+  const omega = Math.sqrt((6.674e-11 * 4e11) / 8);
+  const cases = [
+    ["projectile", [["x", "projectile", 1.0, 10.0], ["y", "projectile", 1.0, 10 - 4.905],
+      ["y", "projectile", 2.0, 20 - 4.905 * 4]]],
+    ["spinning_box", [["ω", "box", 1.0, 3.0], ["ω", "box", 3.0, 9.0]]],
+    ["orbit", [["x", "heavy", 1.0, -0.5 * Math.cos(omega)], ["y", "heavy", 1.0, -0.5 * Math.sin(omega)],
+      ["x", "light", 2.0, 1.5 * Math.cos(2 * omega)]]],
+    ["bouncing_ball", []],
+  ];
+  for (const [name, expected] of cases) {
+    const html = path.join(out, `browser_closed_form_${name}.html`);
+    gamephysics("view", path.join(root, `scenes/${name}.json`), "--out", html);
+    const { page, errors, close } = await openPage(html, "#t=1");
+    try {
+      await page.waitForFunction(() => window.gp !== undefined);
+      const forms = await page.evaluate(() => window.gp.closedForms());
+      const times = await page.evaluate(() => window.gp.times());
+      assert.equal(await page.isVisible("#motion-plot"), expected.length > 0, `${name}: the plot`);
+      assert.equal(await page.isVisible("#show-closed-form"), expected.length > 0, `${name}: the layer`);
+      if (expected.length > 0) {
+        const labels = await page.evaluate(() => window.gp.labels("motion-plot"));
+        assert.ok(labels.includes("closed form (dashed)"), `${name}: legend ${labels}`);
+      } else {
+        assert.deepEqual(forms, [], `${name}: no closed form`);
+      }
+      for (const [quantity, body, t, value] of expected) {
+        const form = forms.find((f) => f.quantity === quantity && f.body === body);
+        assert.ok(form, `${name}: a closed form of ${quantity} of ${body}`);
+        const k = times.findIndex((tk) => Math.abs(tk - t) < 1e-9);
+        assert.ok(k >= 0, `${name}: an output instant at ${t} s`);
+        assert.ok(Math.abs(form.values[k] - value) <= 1e-9 * Math.max(1, Math.abs(value)),
+          `${name}: ${quantity} of ${body} at ${t} s: ${form.values[k]}, by hand ${value}`);
+      }
+      if (name === "projectile") await page.screenshot({ path: path.join(out, "viewer_closed_form.png"), fullPage: true });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});

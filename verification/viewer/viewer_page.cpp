@@ -56,13 +56,19 @@ const char* type_name(BodyType type) {
   }
 }
 
-json bodies_json(const Space& space) {
+// Each body with its constant applied force and torque, as the scene gives them (bodies are
+// numbered in the scene's order), for the page's closed forms.
+json bodies_json(const Space& space, const Scene& scene) {
   json bodies = json::array();
   for (BodyId id = 0; id < space.body_count(); ++id) {
+    const BodyDef& def = scene.bodies.at(id);
     bodies.push_back({{"name", std::string(space.name(id))},
                       {"type", type_name(space.type(id))},
                       {"mass", finite_or_null(space.mass(id))},
                       {"moment", finite_or_null(space.moment(id))},
+                      {"force", vec(def.force)},
+                      {"force_at_com", !def.force_point.has_value()},
+                      {"torque", def.torque},
                       {"shapes", json::array()}});
   }
   // The shapes in their body's frame centred on the centre of mass, as the engine holds them.
@@ -181,17 +187,18 @@ void write_viewer_page(std::ostream& out, const ViewerRun& run) {
       {"output_dt", run.scene.output_dt},
       {"gravity", vec(settings.gravity)},
       {"G", settings.G ? json(*settings.G) : json(nullptr)},
-      {"bodies", bodies_json(run.space)},
+      {"bodies", bodies_json(run.space, run.scene)},
       {"frames", frames_json(run.recording)},
       {"impacts", impacts_json(run.space, run.recording)},
       {"oracle", oracle_json(run)},
       {"audit", run.audit_page},
   };
-  const std::string page =
-      fill(viewer_assets::kHtml, {{"GP_TITLE", html_escape(run.title)},
-                                  {"/*GP_CSS*/", std::string(viewer_assets::kCss)},
-                                  {"/*GP_DATA*/", script_safe(data.dump())},
-                                  {"/*GP_JS*/", std::string(viewer_assets::kJs)}});
+  const std::string page = fill(
+      viewer_assets::kHtml, {{"GP_TITLE", html_escape(run.title)},
+                             {"/*GP_CSS*/", std::string(viewer_assets::kCss)},
+                             {"/*GP_DATA*/", script_safe(data.dump())},
+                             {"/*GP_CLOSED_FORM_JS*/", std::string(viewer_assets::kClosedFormJs)},
+                             {"/*GP_JS*/", std::string(viewer_assets::kJs)}});
   out << page;
 }
 

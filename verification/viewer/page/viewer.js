@@ -146,6 +146,19 @@
     ctx.fillText(`${Number(scaleBar.metres.toPrecision(1))} m`, x + scaleBar.pixels + 6, y + 2);
   }
 
+  // Each body's whole path by its closed form (the parabola, the circle), dashed, labelled at its end.
+  function drawClosedFormPaths() {
+    const paths = bodies.map((b, i) => [closedForms.find((f) => f.body === i && f.quantity === "x"),
+      closedForms.find((f) => f.body === i && f.quantity === "y")]).filter(([x, y]) => x && y);
+    for (const [x, y] of paths) {
+      ctx.beginPath();
+      times.forEach((t, k) => { const [sx, sy] = toScreen(x.at(t), y.at(t)); if (k === 0) ctx.moveTo(sx, sy); else ctx.lineTo(sx, sy); });
+      ctx.strokeStyle = "rgba(0,0,0,0.55)"; ctx.lineWidth = 1; ctx.setLineDash([5, 4]); ctx.stroke(); ctx.setLineDash([]);
+      const [ex, ey] = toScreen(x.at(times[count - 1]), y.at(times[count - 1]));
+      ctx.fillStyle = "rgba(0,0,0,0.7)"; ctx.font = "11px sans-serif"; ctx.fillText("closed form", ex + 6, ey - 6);
+    }
+  }
+
   let impulseArrows = [];  // those of the last frame drawn, for the tests
   function drawWorld() {
     const k = state.frame;
@@ -163,6 +176,7 @@
         ctx.strokeStyle = rgb(colours[i], 0.4); ctx.lineWidth = 1; ctx.stroke();
       });
     }
+    if (show("show-closed-form")) drawClosedFormPaths();
     bodies.forEach((b, i) => drawBody(i, states[i], false));
     if (data.oracle && show("show-oracle")) {
       bodies.forEach((b, i) => { if (b.type === "dynamic") drawBody(i, data.oracle.states[k][i], true); });
@@ -225,10 +239,11 @@
   const axisNumber = (v) =>
     v !== 0 && (Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3) ? v.toExponential(1) : String(v);
 
-  // A line plot of `series` ({label, colour, values}) over time, with the current instant marked.
+  // A line plot of `series` ({label, colour, values, dash}) over time, with the current instant
+  // marked; a series with a dash pattern is drawn dashed, one with an empty label has no legend.
   // Linear axes get round ticks, a zero line when 0 is inside and a margin, so that a curve along
   // the top or the bottom stays in sight; log axes get whole decades.
-  const drawnTicks = {};  // per plot, for the tests
+  const drawnTicks = {}, drawnLabels = {};  // per plot, for the tests
   function plot(canvas, series, log) {
     const g = canvas.getContext("2d");
     const W = canvas.width, H = canvas.height, left = 70, right = 10, top = 10, bottom = 38;
@@ -267,11 +282,14 @@
       g.moveTo(left, py(0)); g.lineTo(W - right, py(0)); g.stroke(); g.setLineDash([]);
     }
     let lx = left + 6;
+    drawnLabels[canvas.id] = [];
     for (const s of series) {
-      g.strokeStyle = s.colour; g.lineWidth = 1.5; g.beginPath();
+      g.strokeStyle = s.colour; g.lineWidth = 1.5; g.setLineDash(s.dash ?? []); g.beginPath();
       s.values.forEach((v, k) => { if (k === 0) g.moveTo(px(times[k]), py(v)); else g.lineTo(px(times[k]), py(v)); });
-      g.stroke();
+      g.stroke(); g.setLineDash([]);
+      if (!s.label) continue;
       g.fillStyle = s.colour; g.fillText(s.label, lx, H - 6); lx += g.measureText(s.label).width + 14;
+      drawnLabels[canvas.id].push(s.label);
     }
     g.strokeStyle = "#c00"; g.beginPath(); g.moveTo(px(times[state.frame]), top);
     g.lineTo(px(times[state.frame]), H - bottom); g.stroke();
@@ -296,6 +314,16 @@
       Math.hypot(frames.states[k][i][0] - data.oracle.states[k][i][0],
         frames.states[k][i][1] - data.oracle.states[k][i][1])))),
   }] : null;
+
+  // The motion where the scene has a closed form (closed_form.js): the run's x, y or ω, solid, and
+  // the closed form's, dashed black over it.
+  const closedForms = gpClosedForms(data);
+  const motionSeries = [
+    ...closedForms.map((f, n) => ({ label: `${f.quantity} ${bodies[f.body].name}`,
+      colour: rgb(palette[n % palette.length]), values: column(frames.states.map((s) => s[f.body]), f.column) })),
+    ...closedForms.map((f, n) => ({ label: n === 0 ? "closed form (dashed)" : "", colour: "#000",
+      dash: [5, 4], values: times.map(f.at) })),
+  ];
 
   const fmt = (v) => (v === null || v === undefined ? "∞" : Math.abs(v) < 1e-300 ? "0" : Number(v.toPrecision(6)).toString());
   const vec = (v) => `(${fmt(v[0])}, ${fmt(v[1])})`;
@@ -365,6 +393,7 @@
     plot($("energy-plot"), energySeries, false);
     plot($("momentum-plot"), momentumSeries, false);
     if (errorSeries) plot($("error-plot"), errorSeries, true);
+    if (closedForms.length) plot($("motion-plot"), motionSeries, false);
     $("scrub").value = state.frame;
     $("clock").textContent = `t = ${times[state.frame].toFixed(3)} s  frame ${state.frame}/${count - 1}`;
     inspect();
@@ -422,6 +451,7 @@
     `g = ${vec(data.gravity)} m/s²${data.G === null ? "" : `, G = ${fmt(data.G)} m³/(kg·s²)`}, ` +
     `${data.impacts.length} impacts; velocity arrows ${velocityScale > 0 ? fmt(1 / velocityScale * 80) : 0} m/s per 80 px`;
   if (!data.oracle) { $("oracle-layer").style.display = "none"; $("oracle-figure").style.display = "none"; }
+  if (!closedForms.length) { $("motion-figure").style.display = "none"; $("closed-form-layer").style.display = "none"; }
   const scrub = $("scrub");
   scrub.max = count - 1;
   scrub.addEventListener("input", () => { pause(); setFrame(Number(scrub.value)); });
@@ -455,6 +485,7 @@
   window.gp = {
     frameCount: count,
     frame: () => state.frame,
+    times: () => times.slice(),
     time: () => times[state.frame],
     playing: () => state.playing,
     play, pause, setFrame,
@@ -466,6 +497,9 @@
     selected: () => (state.selected === null ? null : bodies[state.selected].name),
     scaleBar: () => scaleBar,
     ticks: (id) => drawnTicks[id],
+    labels: (id) => drawnLabels[id],
+    closedForms: () => closedForms.map((f) => ({ body: bodies[f.body].name, quantity: f.quantity,
+      values: times.map(f.at) })),
     impulseArrows: () => impulseArrows,
   };
   // Opened as PAGE.html#t=1.4&body=ball&play: at the frame nearest that instant, with that body
