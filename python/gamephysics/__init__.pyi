@@ -32,6 +32,10 @@ class Settings:
     position_iterations: int
     restitution_threshold: float
     max_impacts_per_step: int
+    sleep: bool
+    sleep_speed: float
+    sleep_angular_speed: float
+    time_to_sleep: float
     def __init__(self, gravity: Vector = ..., G: Optional[float] = ...,
                  integrator: Integrator = ...) -> None: ...
 

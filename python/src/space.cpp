@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "engine/space.hpp"
 #include "scene/body.hpp"
-#include "scene/shape.hpp"
 #include "scene/input_error.hpp"
 #include "scene/settings.hpp"
-#include "engine/space.hpp"
+#include "scene/shape.hpp"
 
 namespace py = pybind11;
 
@@ -44,7 +44,11 @@ void bind_settings(py::module_& m) {
       .def_readwrite("velocity_iterations", &Settings::velocity_iterations)
       .def_readwrite("position_iterations", &Settings::position_iterations)
       .def_readwrite("restitution_threshold", &Settings::restitution_threshold, "m/s")
-      .def_readwrite("max_impacts_per_step", &Settings::max_impacts_per_step);
+      .def_readwrite("max_impacts_per_step", &Settings::max_impacts_per_step)
+      .def_readwrite("sleep", &Settings::sleep, "islands at rest stop costing (off by default)")
+      .def_readwrite("sleep_speed", &Settings::sleep_speed, "m/s")
+      .def_readwrite("sleep_angular_speed", &Settings::sleep_angular_speed, "rad/s")
+      .def_readwrite("time_to_sleep", &Settings::time_to_sleep, "s");
 }
 
 void bind_shapes(py::module_& m) {

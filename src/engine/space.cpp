@@ -10,6 +10,7 @@
 #include "engine/setup/mass_setup.hpp"
 #include "engine/setup/mass_validation.hpp"
 #include "engine/setup/shape_offset.hpp"
+#include "engine/sleep/sleeping.hpp"
 #include "engine/space_impl.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "scene/input_error.hpp"
@@ -47,6 +48,10 @@ BodyId Space::add_body(const BodyDef& def) {
   append(self.removed, char{0});
   append(c.inertia.inverse_mass, dynamic ? 1.0 / mass.mass : 0.0);
   append(c.inertia.inverse_moment, rotates ? 1.0 / mass.moment : 0.0);
+  append(c.asleep_inertia.inverse_mass, 0.0);
+  append(c.asleep_inertia.inverse_moment, 0.0);
+  append(c.still_for, 0.0);
+  append(c.sleep_island, kAwake);
   const Transform frame(def.position, def.angle);
   append(c.state.position, frame.apply(mass.local_center));
   append(c.state.angle, dd::rotated_orientation(def.angle, 0.0));
@@ -73,6 +78,7 @@ BodyId Space::add_body(const BodyDef& def) {
 
 void Space::set_force_callback(BodyId body, ForceCallback callback) {
   StepContext& c = impl_->context;
+  wake_island(c, body);
   c.forces.set_callback(body, c.inertia.inverse_moment[body], std::move(callback));
 }
 

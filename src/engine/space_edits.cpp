@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "engine/sleep/sleeping.hpp"
 #include "engine/space.hpp"
 #include "engine/space_impl.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
@@ -37,6 +38,7 @@ void Space::set_position(BodyId body, const Vec2& position) {
   Impl& self = *impl_;
   StepContext& c = self.context;
   validate_finite(position, field_of(body) + ".position");
+  wake_island(c, body);
   c.state.position[body] = position;
   // Static shapes are placed once; placed again, with this one where it now is, on the next step.
   c.world_start.clear();
@@ -47,6 +49,7 @@ void Space::set_angle(BodyId body, double angle) {
   Impl& self = *impl_;
   StepContext& c = self.context;
   validate_finite(angle, field_of(body) + ".angle");
+  wake_island(c, body);
   c.state.angle[body] = dd::rotated_orientation(angle, 0.0);
   c.world_start.clear();
   c.world_end.clear();
@@ -60,6 +63,7 @@ void Space::set_velocity(BodyId body, const Vec2& velocity) {
   if (self.types[body] == BodyType::Static) {
     throw InputError(field, "cannot be set on a static body, which never moves", "static");
   }
+  wake_island(c, body);
   c.state.velocity[body] = velocity;
 }
 
@@ -77,6 +81,7 @@ void Space::set_angular_velocity(BodyId body, double angular_velocity) {
     throw InputError(prefix + ".moment", "is required for a body without area that rotates",
                      "none");
   }
+  wake_island(c, body);
   c.state.angular_velocity[body] = angular_velocity;
 }
 
@@ -86,6 +91,7 @@ void Space::apply_impulse(BodyId body, const Vec2& impulse, const Vec2& point) {
   const std::string prefix = dynamic_field_of(body, "take an impulse");
   validate_finite(impulse, prefix + ".impulse");
   validate_finite(point, prefix + ".point");
+  wake_island(c, body);
   c.state.velocity[body] += dd::velocity_change_from_impulse(impulse, c.inertia.inverse_mass[body]);
   // A body that cannot rotate (inverse moment 0) takes no angular impulse.
   c.state.angular_velocity[body] +=
@@ -98,6 +104,7 @@ void Space::apply_force(BodyId body, const Vec2& force, const Vec2& point) {
   const std::string prefix = dynamic_field_of(body, "take a force");
   validate_finite(force, prefix + ".force");
   validate_finite(point, prefix + ".point");
+  wake_island(c, body);
   c.forces.add_for_next_step(body, c.inertia.inverse_moment[body],
                              {force, dd::torque(point - c.state.position[body], force)});
 }
@@ -106,6 +113,7 @@ void Space::remove_body(BodyId body) {
   Impl& self = *impl_;
   StepContext& c = self.context;
   field_of(body);
+  wake_island(c, body);
   const BodyShapes::Range gone = c.shapes.remove_body(body);
   if (gone.last > gone.first) {
     // Shape indices after the removed ones move down; pairs with a removed shape are dropped.

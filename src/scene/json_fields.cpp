@@ -49,6 +49,12 @@ int read<int>(const nlohmann::json& value, const std::string& path) {
 }
 
 template <>
+bool read<bool>(const nlohmann::json& value, const std::string& path) {
+  if (!value.is_boolean()) throw InputError(path, "must be true or false", describe(value));
+  return value.get<bool>();
+}
+
+template <>
 std::string read<std::string>(const nlohmann::json& value, const std::string& path) {
   if (!value.is_string()) throw InputError(path, "must be a string", describe(value));
   return value.get<std::string>();

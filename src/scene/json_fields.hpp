@@ -26,13 +26,16 @@ std::string describe(double value);
 std::string element_path(const std::string& array_path, std::size_t index);
 
 /// `value` as a T, or InputError naming `path` ("must be a number", "must be an integer", "must be
-/// a string", "must be an array of 2 numbers [x, y]"). T is double, int, std::string or Vec2.
+/// a string", "must be an array of 2 numbers [x, y]", "must be true or false"). T is double, int,
+/// bool, std::string or Vec2.
 template <typename T>
 T read(const nlohmann::json& value, const std::string& path);
 template <>
 double read<double>(const nlohmann::json& value, const std::string& path);
 template <>
 int read<int>(const nlohmann::json& value, const std::string& path);
+template <>
+bool read<bool>(const nlohmann::json& value, const std::string& path);
 template <>
 std::string read<std::string>(const nlohmann::json& value, const std::string& path);
 template <>

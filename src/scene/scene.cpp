@@ -64,6 +64,11 @@ Settings read_settings(const JsonObject& root) {
       root.get_or<int>("direct_solve_points", settings.direct_solve_points);
   settings.restitution_threshold =
       root.get_or<double>("restitution_threshold", settings.restitution_threshold);
+  settings.sleep = root.get_or<bool>("sleep", settings.sleep);
+  settings.sleep_speed = root.get_or<double>("sleep_speed", settings.sleep_speed);
+  settings.sleep_angular_speed =
+      root.get_or<double>("sleep_angular_speed", settings.sleep_angular_speed);
+  settings.time_to_sleep = root.get_or<double>("time_to_sleep", settings.time_to_sleep);
   validate_settings(settings);
   return settings;
 }
@@ -119,7 +124,8 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
   const JsonObject root(document, "");
   root.allow_only({"description", "gravity", "G", "integrator", "dt", "duration", "output_dt",
                    "velocity_iterations", "velocity_tolerance", "direct_solve_points",
-                   "position_iterations", "restitution_threshold", "bodies"});
+                   "position_iterations", "restitution_threshold", "sleep", "sleep_speed",
+                   "sleep_angular_speed", "time_to_sleep", "bodies"});
   root.get_optional<std::string>("description");  // for the reader of the file: type only
   Scene scene;
   scene.settings = read_settings(root);

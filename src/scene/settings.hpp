@@ -43,6 +43,14 @@ struct Settings {
   /// about n times this.
   double linear_slop = 2e-4;
   double contact_margin = 0.02;  ///< m: shapes this close get (speculative) contact points
+  /// Islands at rest stop costing: an island of touching dynamic bodies whose every body has
+  /// moved slower than sleep_speed and sleep_angular_speed for time_to_sleep is held still and
+  /// skipped until something touches it, an edit or a force reaches it, or a kinematic body
+  /// moves into it. Off by default: a verification scene integrates every body at every step.
+  bool sleep = false;
+  double sleep_speed = 0.01;           ///< m/s (Box2D 2.4's b2_linearSleepTolerance)
+  double sleep_angular_speed = 0.035;  ///< rad/s (2°/s)
+  double time_to_sleep = 0.5;          ///< s (Box2D's b2_timeToSleep)
 };
 
 }  // namespace gp

@@ -22,7 +22,6 @@ std::string number_text(const Vec2& v) {
 
 namespace {
 
-
 void positive(double value, const std::string& field, const std::string& why) {
   validate_finite(value, field);
   if (!(value > 0.0)) throw InputError(field, "must be > 0 (" + why + ")", number_text(value));
@@ -108,6 +107,9 @@ void validate_settings(const Settings& settings) {
   non_negative(settings.restitution_threshold, "restitution_threshold");
   non_negative(settings.linear_slop, "linear_slop");
   non_negative(settings.contact_margin, "contact_margin");
+  non_negative(settings.sleep_speed, "sleep_speed");
+  non_negative(settings.sleep_angular_speed, "sleep_angular_speed");
+  non_negative(settings.time_to_sleep, "time_to_sleep");
   if (settings.max_impacts_per_step < 0) {
     throw InputError("max_impacts_per_step", "must be >= 0",
                      number_text(settings.max_impacts_per_step));

@@ -113,7 +113,8 @@ TEST_CASE("Unknown fields are rejected at every level", "[FR:Verify-Physical_Con
   check_error(R"({"gravty": [0, -9.81], "dt": 0.01, "duration": 1, "bodies": []})", "gravty",
               "is not a known field (known: description, gravity, G, integrator, dt, duration, "
               "output_dt, velocity_iterations, velocity_tolerance, direct_solve_points, "
-              "position_iterations, restitution_threshold, bodies)",
+              "position_iterations, restitution_threshold, sleep, sleep_speed, "
+              "sleep_angular_speed, time_to_sleep, bodies)",
               "[0,-9.81]");
   check_error(scene_with(R"({"name": "b", "position": [0, 0], "mas": 1})"), "bodies[0].mas",
               "is not a known field (known: name, type, position, angle, velocity, "
@@ -218,6 +219,12 @@ TEST_CASE("Settings are checked", "[FR:Verify-Physical_Constraints]") {
   check_error(R"({"G": -1, "dt": 0.01, "duration": 1, "bodies": []})", "G", "must be >= 0", "-1");
   check_error(R"({"restitution_threshold": -0.1, "dt": 0.01, "duration": 1, "bodies": []})",
               "restitution_threshold", "must be >= 0", "-0.10000000000000001");
+  check_error(R"({"sleep": "yes", "dt": 0.01, "duration": 1, "bodies": []})", "sleep",
+              "must be true or false", "\"yes\"");
+  check_error(R"({"sleep_speed": -0.5, "dt": 0.01, "duration": 1, "bodies": []})", "sleep_speed",
+              "must be >= 0", "-0.5");
+  check_error(R"({"time_to_sleep": -1, "dt": 0.01, "duration": 1, "bodies": []})", "time_to_sleep",
+              "must be >= 0", "-1");
   check_error(R"({"direct_solve_points": 300, "dt": 0.01, "duration": 1, "bodies": []})",
               "direct_solve_points", "must be in [0, 256]", "300");
   check_error(R"({"velocity_tolerance": -1e-5, "dt": 0.01, "duration": 1, "bodies": []})",

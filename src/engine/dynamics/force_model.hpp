@@ -80,6 +80,14 @@ class ForceModel {
       }
     }
   }
+  /// Whether the body at entry `entry` of bodies() feels gravity alone: no applied force or
+  /// torque, constant, at a point, for the next step or given by a callback.
+  bool gravity_only(std::size_t entry) const {
+    if (applied_.empty()) return true;  // the common case
+    return !std::binary_search(
+        applied_.begin(), applied_.end(), entry,
+        [](const auto& x, const auto& y) { return entry_of(x) < entry_of(y); });
+  }
   /// The dynamic bodies, in increasing id order.
   const std::vector<BodyId>& bodies() const { return ids_; }
   /// Per entry of bodies(): whether the body can rotate (it has a moment of inertia). The
@@ -99,6 +107,8 @@ class ForceModel {
     Vec2 linear;     ///< m/s²
     double angular;  ///< rad/s²
   };
+  static std::size_t entry_of(const Applied& a) { return a.entry; }
+  static std::size_t entry_of(std::size_t entry) { return entry; }
   /// Whether `forces` push the body beyond gravity, so that it needs an Applied.
   static bool beyond_gravity(const BodyForces& forces);
   /// The constant accelerations of `body` under `applied`, with its forces for the next step.

@@ -23,6 +23,12 @@ bool solves_islands(const StepContext& c) {
 bool has_dynamic(const StepContext& c) {
   return !c.forces.bodies().empty();
 }
+bool sleeps(const StepContext& c) {
+  return c.settings.sleep;
+}
+bool sleeps_in_piles(const StepContext& c) {
+  return c.settings.sleep && c.collides;
+}
 bool has_kinematic(const StepContext& c) {
   return !c.kinematic.empty();
 }
@@ -51,6 +57,23 @@ bool sweep(StepContext& c, StepMechanisms& m) {
   c.shapes.place([&](BodyId j) { return std::pair(path.position(j, h), path.angle(j, h)); },
                  c.world_end);
   c.pairs = m.detection.candidate_pairs(c.shapes, c.dynamic, c.world_start, c.world_end);
+  return true;
+}
+
+// A sleeping island that something reaches wakes before the contacts are found; the pairs are
+// found again with its bodies awake.
+bool wake(StepContext& c, StepMechanisms& m) {
+  if (wake_touched(c)) sweep(c, m);
+  return true;
+}
+
+bool hold(StepContext& c, StepMechanisms&) {
+  hold_sleeping(c);
+  return true;
+}
+
+bool fall_asleep(StepContext& c, StepMechanisms& m) {
+  gp::fall_asleep(c, m.sleep);
   return true;
 }
 
@@ -157,6 +180,13 @@ constexpr std::array kStages{
             return count(c.shapes.size(), "shapes, boxes swept along the ballistic paths");
           },
           sweep},
+    Stage{"sleep: islands reached wake up", "", kLocalPass | kSubStepPass, sleeps_in_piles,
+          [](const StepContext&) {
+            return std::string(
+                "a sleeping island paired with an awake body, or in a moving "
+                "kinematic body's swept box, wakes before the contacts are found");
+          },
+          wake},
     Stage{"time of impact: sub-step ends at the first impact", "IM:col2D", kSubStepPass, collides,
           [](const StepContext&) {
             return std::string("the sub-step is shortened to the earliest impact of any pair");
@@ -191,6 +221,11 @@ constexpr std::array kStages{
             return count(c.kinematic.size(), "bodies moved at their velocity");
           },
           move_kinematic},
+    Stage{"sleep: sleeping bodies held", "", kLocalPass | kSubStepPass, sleeps,
+          [](const StepContext&) {
+            return std::string("sleeping bodies stay where they fell asleep, at rest");
+          },
+          hold},
     Stage{"contact solver: prepare and warm start", "GD:impulse DD:impulseV",
           kLocalPass | kSubStepPass, collides,
           [](const StepContext&) {
@@ -242,6 +277,14 @@ constexpr std::array kStages{
             return std::string("each point's impulses, for the next sub-step");
           },
           keep_warm_starts},
+    Stage{"sleep: islands at rest fall asleep", "", kLocalPass | kSubStepPass, sleeps_in_piles,
+          [](const StepContext& c) {
+            return "islands whose bodies all moved slower than " +
+                   std::to_string(c.settings.sleep_speed) + " m/s and " +
+                   std::to_string(c.settings.sleep_angular_speed) + " rad/s for " +
+                   std::to_string(c.settings.time_to_sleep) + " s";
+          },
+          fall_asleep},
     Stage{"impacts at the end of the sub-step", "IM:col2D GD:impulse", kSubStepPass, collides,
           [](const StepContext&) {
             return std::string("IM:col2D at t_c for one point, else an iterated solve");

@@ -16,6 +16,7 @@
 #include "engine/collision/collision_detection.hpp"
 #include "engine/impacts/impacts.hpp"
 #include "engine/impacts/local_impacts.hpp"
+#include "engine/sleep/sleeping.hpp"
 #include "engine/solver/contact_solver.hpp"
 #include "engine/step/step_context.hpp"
 
@@ -30,6 +31,7 @@ struct StepMechanisms {
   LocalImpacts local_impacts;
   ContactSolver solver;
   ContactSet impact_contacts;  ///< scratch of the impacts resolved at the end of a sub-step
+  SleepScratch sleep;
 };
 
 /// Which pass of a step runs a stage (bits).

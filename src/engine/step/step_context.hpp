@@ -21,6 +21,9 @@
 
 namespace gp {
 
+/// The sleep_island of a body that is awake.
+inline constexpr std::uint32_t kAwake = ~std::uint32_t{0};
+
 struct StepContext {
   explicit StepContext(const Settings& s)
       : settings(s), forces(s), integrator(make_integrator(s.integrator)) {}
@@ -52,6 +55,11 @@ struct StepContext {
   ContactSet contacts;                   ///< resting and persistent, solved over the sub-step
   ContactSet speculative_contacts;       ///< impacts on resting bodies, this step only
   std::vector<WarmStart> warm_starts;    ///< the impulses of the last sub-step's contacts
+
+  // Sleeping (Settings::sleep), per body.
+  std::vector<double> still_for;            ///< s moved slower than the sleep thresholds
+  std::vector<std::uint32_t> sleep_island;  ///< kAwake, or the island the body sleeps in
+  BodyInertia asleep_inertia;               ///< what a sleeping body wakes up with
 
   // What the step reports.
   std::vector<Impact> impacts;  ///< resolved at their time of impact during the step
