@@ -71,6 +71,8 @@ int main(int argc, char** argv) {
   auto* peer = app.add_subcommand("peer", "Run a scene file in Chipmunk2D or Box2D, write CSV");
   peer->add_option("scene", peer_run.scene, "Scene file (JSON)")->required();
   peer->add_option("--engine", peer_run.engine, "chipmunk or box2d")->required();
+  peer->add_option("--config", peer_run.config,
+                   "matched (our physics, the default) or default (as the peer's users run it)");
   peer->add_option("--out", peer_run.out, "Trajectory CSV to write")->required();
   peer->add_option("--dt", peer_run.overrides.dt, "Time step [s] (overrides the file)");
   peer->add_option("--duration", peer_run.overrides.duration,

@@ -9,6 +9,13 @@ std::string_view config_name(PeerConfig config) {
   return config == PeerConfig::Default ? "default" : "matched";
 }
 
+std::optional<PeerConfig> config_from_name(std::string_view name) {
+  for (PeerConfig config : {PeerConfig::Default, PeerConfig::Matched}) {
+    if (config_name(config) == name) return config;
+  }
+  return std::nullopt;
+}
+
 PeerScene peer_scene(const Scene& scene, PeerConfig config) {
   const std::unique_ptr<Space> space = build_space(scene);
   const Settings defaults;

@@ -47,6 +47,8 @@ enum class PeerConfig {
 
 /// "default", "matched".
 std::string_view config_name(PeerConfig config);
+/// The configuration named `name`, or nothing.
+std::optional<PeerConfig> config_from_name(std::string_view name);
 
 /// The world of a scene as the peers are given it.
 struct PeerScene {

@@ -82,7 +82,7 @@ std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
                 {{d.angular_momentum, 3e-13}});
     list.within(name + ", velocity_verlet, " + n, "DD:kEnergy IM:transMot",
                 "energy drift " + figure(d.energy) + " (relative)",
-                "≤ 3e-11 relative and bounded: symplectic integrator", {{d.energy, 3e-11}});
+                "≤ 2e-11 relative and bounded: symplectic integrator", {{d.energy, 2e-11}});
   }
   if (o.progress) *o.progress << "  conservation: elastic discs in a box, " << n << "\n";
   // Without the restitution threshold every impact is elastic (IM:col2D with C_R = 1), so the
