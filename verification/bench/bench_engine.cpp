@@ -1,6 +1,7 @@
 #include "verification/bench/bench_engine.hpp"
 
 #include "engine/scene/scene_space.hpp"
+#include "verification/bench/formatted.hpp"
 
 #include <sstream>
 
@@ -82,8 +83,11 @@ std::string EngineRun::describe() const {
   const Settings& s = ours_->settings();
   std::ostringstream text;
   text << "GamePhysics (double, " << integrator_name(s.integrator) << "): at most "
-       << s.velocity_iterations << " velocity passes (ending below " << s.velocity_tolerance
-       << " m/s) and " << s.position_iterations << " position passes, islands up to "
+       << s.velocity_iterations << " velocity passes ("
+       << (s.velocity_tolerance > 0.0 ? "ending once one changes no velocity by more than " +
+                                            formatted("%g", s.velocity_tolerance) + " m/s"
+                                      : std::string("all run unless one changes nothing"))
+       << ") and " << s.position_iterations << " position passes, islands up to "
        << s.direct_solve_points << " points solved directly, linear slop " << s.linear_slop
        << " m, restitution threshold " << s.restitution_threshold << " m/s, no sleeping";
   return text.str();
