@@ -77,8 +77,9 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
     const Scene alike = like_the_peers(scene);
     const Differences ours_se =
         compare(run_engine(alike, alike.settings.integrator, scene.dt), oracle);
-    std::string measured = "ours (" + std::string(integrator_name(own)) + "): " + describe(ours) +
-                           "; ours (symplectic_euler, all passes): " + describe(ours_se);
+    std::string measured = "ours (" + std::string(integrator_name(own)) +
+                           ", double): " + describe(ours) +
+                           "; ours (symplectic_euler, double, all passes): " + describe(ours_se);
     double best_peer = INFINITY;
     for (const auto engine : kPeers) {
       Differences d;
@@ -88,7 +89,8 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
         cannot_run(list, name, std::string(peers::engine_name(engine)), e.what());
         continue;
       }
-      measured += "; " + std::string(peers::engine_name(engine)) + " matched: " + describe(d);
+      measured += "; " + std::string(peers::engine_name(engine)) + " matched (symplectic Euler, " +
+                  (engine == peers::PeerEngine::Box2d ? "float" : "double") + "): " + describe(d);
       best_peer = std::min(best_peer, d.position);
       csv << name << "," << peers::engine_name(engine) << "," << scene.dt << "," << d.position
           << "," << d.orientation << "," << d.velocity << "\n";
