@@ -14,10 +14,12 @@ TEST_CASE("verify: a limit more than 10x above its figure needs a reason", "[ver
   list.within("exact zero", "", "0 m", "≤ 1e-12 m", {{0.0, 1e-12}});
   list.within("one of two loose", "", "1 m, 1e-6 m/s", "≤ 2 m, ≤ 1 m/s", {{1.0, 2.0}, {1e-6, 1.0}});
   list.within("failed", "", "2 m", "≤ 1 m", {{2.0, 1.0}});
+  list.within("tight with a reason", "", "3e-9 m", "≤ 1e-8 m", {{3e-9, 1e-8}}, "why");
   const auto& rows = list.rows();
   CHECK(rows[0].passed);
-  CHECK(rows[2].criterion.find("a reason") != std::string::npos);
+  CHECK(rows[2].criterion.find("looser than 10×: a reason") != std::string::npos);
   CHECK_FALSE(rows[5].passed);
+  CHECK(rows[6].criterion == "≤ 1e-8 m (why)");
   const auto loose = gp::verification::loose_rows(rows);
   REQUIRE(loose.size() == 3);
   CHECK(loose[0]->name == "loose");

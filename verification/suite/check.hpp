@@ -46,13 +46,19 @@ class CheckList {
                      {}});
   }
   /// A row that passes when every figure is within its limit. A limit more than kLooseness times
-  /// its figure needs `looser_because` (one line), which the report shows beside the criterion;
-  /// loose_rows() finds the rows without one.
+  /// its figure needs `looser_because` (one line), which the report shows beside the criterion,
+  /// marked "looser than 10×" when a limit is; loose_rows() finds the rows without one.
   void within(std::string name, std::string srs_ids, std::string measured, std::string criterion,
               std::vector<Limit> limits, std::string looser_because = "") {
     bool passed = true;
-    for (const Limit& l : limits) passed = passed && l.measured <= l.limit;
-    if (!looser_because.empty()) criterion += " (looser than 10×: " + looser_because + ")";
+    bool loose = false;
+    for (const Limit& l : limits) {
+      passed = passed && l.measured <= l.limit;
+      loose = loose || l.limit > kLooseness * l.measured;
+    }
+    if (!looser_because.empty()) {
+      criterion += (loose ? " (looser than 10×: " : " (") + looser_because + ")";
+    }
     rows_.push_back({section_, std::move(name), std::move(srs_ids), std::move(measured),
                      std::move(criterion), passed, std::move(limits), std::move(looser_because)});
   }
