@@ -64,6 +64,8 @@ int main(int argc, char** argv) {
   gp::cli::add_scene_options(*peer, peer_run.scene, peer_run.overrides,
                              gp::cli::kStep | gp::cli::kDuration | gp::cli::kOutputInterval);
   peer->add_option("--engine", peer_run.engine, "chipmunk or box2d")->required();
+  peer->add_option("--config", peer_run.config,
+                   "matched (our physics, the default) or default (as the peer's users run it)");
   peer->add_option("--out", peer_run.out, "Trajectory CSV to write")->required();
 
   gp::cli::ViewOptions view_run;

@@ -19,12 +19,17 @@ int peer(const PeerOptions& options) {
     std::cerr << "error: peer: --engine must be chipmunk or box2d, got " << options.engine << "\n";
     return kBadInput;
   }
+  const auto config = peers::config_from_name(options.config);
+  if (!config) {
+    std::cerr << "error: peer: --config must be default or matched, got " << options.config << "\n";
+    return kBadInput;
+  }
   Scene scene;
   std::unique_ptr<peers::PeerWorld> world;
   std::unique_ptr<PartialFile> out;
   try {
     scene = load_scene(options.scene, options.overrides);
-    world = peers::make_peer(*engine, peers::peer_scene(scene));
+    world = peers::make_peer(*engine, peers::peer_scene(scene, *config));
     out = std::make_unique<PartialFile>(options.out);
   } catch (const InputError& e) {
     std::cerr << "error: " << file << ": " << e.what() << "\n";

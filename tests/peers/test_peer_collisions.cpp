@@ -27,6 +27,20 @@ TEST_CASE("A head-on elastic collision of equal masses exchanges velocities in b
   }
 }
 
+TEST_CASE("Chipmunk2D as its users run it multiplies the elasticities: C_R = 1 × 0",
+          "[NFR:Correctness][peers]") {
+  // The head-on collision above, perfectly inelastic under Chipmunk's own rule: equal masses
+  // meeting at ±2 m/s both stop (momentum zero, C_R = 0).
+  gp::Scene scene = empty_scene(1.0 / 60.0);
+  scene.bodies.push_back(ball("a", {-2.0, 0.0}, {2.0, 0.0}, 1.0, 1.0));
+  scene.bodies.push_back(ball("b", {2.0, 0.0}, {-2.0, 0.0}, 1.0, 0.0));
+  auto world = gp::peers::make_peer(PeerEngine::Chipmunk,
+                                    gp::peers::peer_scene(scene, gp::peers::PeerConfig::Default));
+  for (int n = 0; n < 90; ++n) world->step(scene.dt);
+  CHECK_THAT(world->state(0).velocity.x(), WithinAbs(0.0, 1e-5));
+  CHECK_THAT(world->state(1).velocity.x(), WithinAbs(0.0, 1e-5));
+}
+
 TEST_CASE("Peers combine friction as the geometric mean, as our engine does",
           "[NFR:Correctness][peers]") {
   // A box sliding at 2 m/s on a static floor, μ = 0.9 on the box and 0.1 on the floor: μ = 0.3,

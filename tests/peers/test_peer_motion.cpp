@@ -107,9 +107,14 @@ TEST_CASE("Peers feel pairwise gravitation applied as forces", "[NFR:Correctness
   }
 }
 
-TEST_CASE("Peer engines are named chipmunk and box2d", "[NFR:Correctness][peers]") {
+TEST_CASE("Peer engines are named chipmunk and box2d, their configurations default and matched",
+          "[NFR:Correctness][peers]") {
   for (PeerEngine engine : {PeerEngine::Chipmunk, PeerEngine::Box2d}) {
     CHECK(gp::peers::engine_from_name(gp::peers::engine_name(engine)) == engine);
   }
   CHECK_FALSE(gp::peers::engine_from_name("bullet"));
+  for (auto config : {gp::peers::PeerConfig::Default, gp::peers::PeerConfig::Matched}) {
+    CHECK(gp::peers::config_from_name(gp::peers::config_name(config)) == config);
+  }
+  CHECK_FALSE(gp::peers::config_from_name("release"));
 }

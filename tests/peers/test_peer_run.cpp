@@ -69,19 +69,33 @@ TEST_CASE("A peer run stops on every output instant and writes the trajectory CS
   }
 }
 
-TEST_CASE("Peers get our defaults as their own and the scene's iterations when it sets them",
+TEST_CASE("Default peers keep their own iterations, matched ones take ours, a scene's wins",
           "[NFR:Correctness][peers]") {
+  using gp::peers::PeerConfig;
   gp::Scene scene = mixed_scene();
-  CHECK_FALSE(gp::peers::peer_scene(scene).velocity_iterations);
-  CHECK_THAT(gp::peers::make_peer(PeerEngine::Box2d, gp::peers::peer_scene(scene))->describe(),
-             Catch::Contains("8 velocity and 3 position iterations"));
+  const auto as_is = gp::peers::peer_scene(scene, PeerConfig::Default);
+  CHECK_FALSE(as_is.velocity_iterations);
+  CHECK_THAT(
+      gp::peers::make_peer(PeerEngine::Box2d, as_is)->describe(),
+      Catch::Contains("8 velocity and 3 position iterations") && Catch::Contains("sleeping on"));
+  CHECK_THAT(gp::peers::make_peer(PeerEngine::Chipmunk, as_is)->describe(),
+             Catch::Contains("collision slop 0.1 m") && Catch::Contains("as products"));
+  const auto matched = gp::peers::peer_scene(scene, PeerConfig::Matched);
+  CHECK_THAT(
+      gp::peers::make_peer(PeerEngine::Box2d, matched)->describe(),
+      Catch::Contains("10 velocity and 4 position iterations") && Catch::Contains("sleeping off"));
+  CHECK_THAT(gp::peers::make_peer(PeerEngine::Chipmunk, matched)->describe(),
+             Catch::Contains("collision slop 0.0002 m") && Catch::Contains("as ours"));
   scene.settings.velocity_iterations = 20;
   scene.settings.position_iterations = 6;
-  const auto peer = gp::peers::peer_scene(scene);
-  CHECK_THAT(gp::peers::make_peer(PeerEngine::Box2d, peer)->describe(),
-             Catch::Contains("20 velocity and 6 position iterations"));
-  CHECK_THAT(gp::peers::make_peer(PeerEngine::Chipmunk, peer)->describe(),
-             Catch::Contains("20 iterations"));
+  for (PeerConfig config : {PeerConfig::Default, PeerConfig::Matched}) {
+    const auto peer = gp::peers::peer_scene(scene, config);
+    INFO(gp::peers::config_name(config));
+    CHECK_THAT(gp::peers::make_peer(PeerEngine::Box2d, peer)->describe(),
+               Catch::Contains("20 velocity and 6 position iterations"));
+    CHECK_THAT(gp::peers::make_peer(PeerEngine::Chipmunk, peer)->describe(),
+               Catch::Contains("20 iterations"));
+  }
 }
 
 TEST_CASE("Peers are given our mass setup: infinite mass for static and kinematic bodies",

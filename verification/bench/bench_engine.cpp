@@ -1,30 +1,68 @@
 #include "verification/bench/bench_engine.hpp"
 
 #include "engine/scene/scene_space.hpp"
+#include "verification/bench/formatted.hpp"
 
 #include <sstream>
 
 namespace gp::bench {
 
-std::string_view engine_label(Engine engine) {
-  switch (engine) {
-    case Engine::Ours:
-      return "ours";
-    case Engine::Chipmunk:
-      return peers::engine_name(peers::PeerEngine::Chipmunk);
-    case Engine::Box2d:
-      break;
+namespace {
+
+struct PeerOf {
+  Engine engine;
+  std::string_view label;
+  peers::PeerEngine peer;
+  peers::PeerConfig config;
+};
+
+constexpr PeerOf kPeers[] = {
+    {Engine::ChipmunkDefault, "chipmunk-default", peers::PeerEngine::Chipmunk,
+     peers::PeerConfig::Default},
+    {Engine::ChipmunkMatched, "chipmunk-matched", peers::PeerEngine::Chipmunk,
+     peers::PeerConfig::Matched},
+    {Engine::Box2dDefault, "box2d-default", peers::PeerEngine::Box2d, peers::PeerConfig::Default},
+    {Engine::Box2dMatched, "box2d-matched", peers::PeerEngine::Box2d, peers::PeerConfig::Matched},
+};
+
+// Debian's libchipmunk.so.7.0.3 holds the banner "Chipmunk v%s (Debug Enabled)" and the messages
+// of cpBodySanityCheck, and calls cpMessage from 168 places; libbox2d.so.2.4.1 calls
+// __assert_fail from 195: neither was built with NDEBUG.
+constexpr std::string_view kChipmunkBuild = "double, Debian build, debug checks on";
+constexpr std::string_view kBox2dBuild = "float, Debian build, asserts on";
+
+const PeerOf* peer_of(Engine engine) {
+  for (const PeerOf& p : kPeers) {
+    if (p.engine == engine) return &p;
   }
-  return peers::engine_name(peers::PeerEngine::Box2d);
+  return nullptr;
+}
+
+}  // namespace
+
+std::string_view engine_label(Engine engine) {
+  const PeerOf* p = peer_of(engine);
+  return p ? p->label : "ours";
+}
+
+std::string_view engine_build(Engine engine) {
+  const PeerOf* p = peer_of(engine);
+  if (!p) return "double, this build";
+  return p->peer == peers::PeerEngine::Chipmunk ? kChipmunkBuild : kBox2dBuild;
+}
+
+std::string_view engine_build(std::string_view label) {
+  for (Engine engine : kEngines) {
+    if (engine_label(engine) == label) return engine_build(engine);
+  }
+  return "";
 }
 
 EngineRun::EngineRun(Engine engine, const Scene& scene) {
-  if (engine == Engine::Ours) {
-    ours_ = build_space(scene);
+  if (const PeerOf* p = peer_of(engine)) {
+    peer_ = peers::make_peer(p->peer, peers::peer_scene(scene, p->config));
   } else {
-    peer_ = peers::make_peer(
-        engine == Engine::Chipmunk ? peers::PeerEngine::Chipmunk : peers::PeerEngine::Box2d,
-        peers::peer_scene(scene));
+    ours_ = build_space(scene);
   }
 }
 
@@ -44,17 +82,22 @@ std::string EngineRun::describe() const {
   if (peer_) return peer_->describe();
   const Settings& s = ours_->settings();
   std::ostringstream text;
-  text << "GamePhysics (double): " << integrator_name(s.integrator) << ", at most "
-       << s.velocity_iterations << " velocity passes (ending below " << s.velocity_tolerance
-       << " m/s) and " << s.position_iterations << " position passes, islands up to "
+  text << "GamePhysics (double, " << integrator_name(s.integrator) << "): at most "
+       << s.velocity_iterations << " velocity passes ("
+       << (s.velocity_tolerance > 0.0 ? "ending once one changes no velocity by more than " +
+                                            formatted("%g", s.velocity_tolerance) + " m/s"
+                                      : std::string("all run unless one changes nothing"))
+       << ") and " << s.position_iterations << " position passes, islands up to "
        << s.direct_solve_points << " points solved directly, linear slop " << s.linear_slop
-       << " m, restitution threshold " << s.restitution_threshold << " m/s";
+       << " m, restitution threshold " << s.restitution_threshold << " m/s, no sleeping";
   return text.str();
 }
 
 std::vector<std::string> engine_settings(const Scene& scene) {
   std::vector<std::string> lines;
-  for (Engine engine : kEngines) lines.push_back(EngineRun(engine, scene).describe());
+  for (Engine engine : kEngines) {
+    lines.push_back(std::string(engine_label(engine)) + ": " + EngineRun(engine, scene).describe());
+  }
   return lines;
 }
 

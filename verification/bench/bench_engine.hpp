@@ -14,13 +14,24 @@
 
 namespace gp::bench {
 
-enum class Engine { Ours, Chipmunk, Box2d };
+/// Ours, and each peer twice: as its users run it (peers::PeerConfig::Default) and matched to our
+/// physics (peers::PeerConfig::Matched).
+enum class Engine { Ours, ChipmunkDefault, ChipmunkMatched, Box2dDefault, Box2dMatched };
 
 /// Ours first, as the ratios are of our time to a peer's: the order of the runs and of the tables.
-inline constexpr std::array<Engine, 3> kEngines{Engine::Ours, Engine::Chipmunk, Engine::Box2d};
+inline constexpr std::array<Engine, 5> kEngines{Engine::Ours, Engine::ChipmunkDefault,
+                                                Engine::ChipmunkMatched, Engine::Box2dDefault,
+                                                Engine::Box2dMatched};
 
-/// "ours", "chipmunk", "box2d".
+/// "ours", "chipmunk-default", "chipmunk-matched", "box2d-default", "box2d-matched".
 std::string_view engine_label(Engine engine);
+
+/// The engine's precision and how its library was built, for beside every speed figure: ours in
+/// double from this build; Chipmunk2D in double and Box2D in float, both Debian's builds, made
+/// without NDEBUG, so that their debug checks (cpAssertSoft, cpAssertSaneBody; b2Assert) run.
+std::string_view engine_build(Engine engine);
+/// The same for the engine labelled `label` (engine_label); empty for an unknown label.
+std::string_view engine_build(std::string_view label);
 
 /// A scene set up in one engine, ready to step from t = 0.
 class EngineRun {

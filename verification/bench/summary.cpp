@@ -71,16 +71,16 @@ void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   out << "\nSummary: wall time of one whole run [ms]; ours/engine = our median / the engine's "
          "(above 1: ours is slower); heap the engine holds at the end of a run [KiB]\n";
   char line[180];
-  std::snprintf(line, sizeof line, "%-10s %-9s %4s %10s %10s %10s %9s %11s %14s %10s\n", "workload",
-                "engine", "reps", "median", "min", "max", "stddev", "ours/engine", "body-steps/s",
-                "heap");
+  std::snprintf(line, sizeof line, "%-10s %-16s %4s %10s %10s %10s %9s %11s %14s %10s\n",
+                "workload", "engine", "reps", "median", "min", "max", "stddev", "ours/engine",
+                "body-steps/s", "heap");
   out << line;
   for (const Figures& f : all) {
     const auto ratio_value = ours_over_engine(all, f);
     const std::string ratio = ratio_value ? formatted("%.2f", *ratio_value) : "-";
     const std::string heap = f.heap_bytes >= 0.0 ? formatted("%.0f", f.heap_bytes / 1024) : "-";
     std::snprintf(line, sizeof line,
-                  "%-10s %-9s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s\n",
+                  "%-10s %-16s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s\n",
                   f.workload.c_str(), f.engine.c_str(), f.repetitions, f.median_ms, f.min_ms,
                   f.max_ms, f.stddev_ms, ratio.c_str(), f.body_steps_per_s, heap.c_str());
     out << line;

@@ -108,7 +108,11 @@ Box2dWorld::Box2dWorld(const PeerScene& scene)
       world_(std::make_unique<b2World>(b2(scene.gravity))),
       velocity_iterations_(scene.velocity_iterations.value_or(kDefaultVelocityIterations)),
       position_iterations_(scene.position_iterations.value_or(kDefaultPositionIterations)),
-      restitution_threshold_(static_cast<float>(scene.restitution_threshold)) {
+      restitution_threshold_(scene.config == PeerConfig::Matched
+                                 ? static_cast<float>(scene.restitution_threshold)
+                                 : b2FixtureDef().restitutionThreshold),
+      config_(scene.config) {
+  world_->SetAllowSleeping(config_ == PeerConfig::Default);
   for (const PeerBody& b : scene.bodies) {
     b2BodyDef def;
     def.type = b2_type(b.type);
@@ -116,7 +120,6 @@ Box2dWorld::Box2dWorld(const PeerScene& scene)
     def.angle = static_cast<float>(b.start.angle);
     def.linearVelocity = b2(b.start.velocity);
     def.angularVelocity = static_cast<float>(b.start.angular_velocity);
-    def.allowSleep = false;
     def.fixedRotation = b.type == BodyType::Dynamic && !std::isfinite(b.moment);
     b2Body* body = world_->CreateBody(&def);
     for (const PeerShape& s : b.shapes) add_shape(body, s, restitution_threshold_);
@@ -142,10 +145,12 @@ BodyState Box2dWorld::state(BodyId id) const {
 std::string Box2dWorld::describe() const {
   std::ostringstream text;
   text << "Box2D " << b2_version.major << '.' << b2_version.minor << '.' << b2_version.revision
-       << " (float): " << velocity_iterations_ << " velocity and " << position_iterations_
-       << " position iterations, linear slop " << b2_linearSlop << " m, polygon skin "
-       << b2_polygonRadius << " m, restitution threshold " << restitution_threshold_
-       << " m/s, sleeping off";
+       << ' ' << config_name(config_)
+       << " (float, symplectic Euler, Debian build with its asserts on): " << velocity_iterations_
+       << " velocity and " << position_iterations_ << " position iterations, linear slop "
+       << b2_linearSlop << " m, polygon skin " << b2_polygonRadius << " m, restitution threshold "
+       << restitution_threshold_ << " m/s, sleeping "
+       << (world_->GetAllowSleeping() ? "on" : "off");
   return text.str();
 }
 

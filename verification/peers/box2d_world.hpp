@@ -9,11 +9,14 @@
 // corners rounded by 0.01 m; a segment of radius r > 0.01 m is its exact capsule as three
 // fixtures (a box of half-thickness r − 0.01 m plus two discs of radius r at the ends); a
 // segment of radius r ≤ 0.01 m is a b2EdgeShape, whose skin makes it 0.01 − r m too thick; edges
-// do not collide with edges. Box2D's combination rule is ours (C_R = max, μ = √(μ_a μ_b)), and
-// its per-fixture restitution threshold (1 m/s by default) is set to ours. Iterations: the
-// scene's velocity and position iterations, else Box2D's recommended 8 and 3. Sleeping is off
-// (our engine never sleeps). Box2D keeps its compile-time linear slop (0.005 m) and continuous
-// collision (dynamic against static only).
+// do not collide with edges. Box2D's combination rule is ours (C_R = max, μ = √(μ_a μ_b)). Box2D
+// keeps its compile-time linear slop (0.005 m) and continuous collision (dynamic against static
+// only) in either configuration.
+//
+// PeerConfig::Default: Box2D's per-fixture restitution threshold (1 m/s), sleeping on (its
+// default), its recommended 8 velocity and 3 position iterations unless the scene sets its own.
+// PeerConfig::Matched: our restitution threshold, sleeping off (our engine never sleeps), our
+// iteration counts.
 
 #include <box2d/box2d.h>
 
@@ -48,6 +51,7 @@ class Box2dWorld final : public PeerWorld {
   int velocity_iterations_;
   int position_iterations_;
   float restitution_threshold_;
+  PeerConfig config_;
 };
 
 }  // namespace gp::peers

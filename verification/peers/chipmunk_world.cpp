@@ -62,11 +62,14 @@ cpBool combine_as_ours(cpArbiter* arbiter, cpSpace*, cpDataPointer) {
 
 }  // namespace
 
-ChipmunkWorld::ChipmunkWorld(const PeerScene& scene) : PeerWorld(scene), space_(cpSpaceNew()) {
+ChipmunkWorld::ChipmunkWorld(const PeerScene& scene)
+    : PeerWorld(scene), space_(cpSpaceNew()), config_(scene.config) {
   cpSpaceSetGravity(space_, cp(scene.gravity));
   if (scene.velocity_iterations) cpSpaceSetIterations(space_, *scene.velocity_iterations);
-  cpSpaceSetCollisionSlop(space_, scene.linear_slop);
-  cpSpaceAddDefaultCollisionHandler(space_)->preSolveFunc = combine_as_ours;
+  if (scene.config == PeerConfig::Matched) {
+    cpSpaceSetCollisionSlop(space_, scene.linear_slop);
+    cpSpaceAddDefaultCollisionHandler(space_)->preSolveFunc = combine_as_ours;
+  }
   for (const PeerBody& b : scene.bodies) {
     cpBody* body = cpSpaceAddBody(space_, make_body(b));
     cpBodySetPosition(body, cp(b.start.position));
@@ -101,10 +104,14 @@ BodyState ChipmunkWorld::state(BodyId id) const {
 
 std::string ChipmunkWorld::describe() const {
   std::ostringstream text;
-  text << "Chipmunk2D " << cpVersionString
-       << " (double, Debian build with debug checks on): " << cpSpaceGetIterations(space_)
-       << " iterations, collision slop " << cpSpaceGetCollisionSlop(space_) << " m, collision bias "
-       << cpSpaceGetCollisionBias(space_) << " (overlap left after 1 s)";
+  text << "Chipmunk2D " << cpVersionString << ' ' << config_name(config_)
+       << " (double, symplectic Euler, Debian build with debug checks on): "
+       << cpSpaceGetIterations(space_) << " iterations, collision slop "
+       << cpSpaceGetCollisionSlop(space_) << " m, collision bias "
+       << cpSpaceGetCollisionBias(space_) << " (overlap left after 1 s), "
+       << (config_ == PeerConfig::Matched ? "surfaces combined as ours by a pre-solve callback"
+                                          : "surfaces combined as products (its own rule)")
+       << ", sleeping " << (std::isinf(cpSpaceGetSleepTimeThreshold(space_)) ? "off" : "on");
   return text.str();
 }
 

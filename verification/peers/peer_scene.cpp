@@ -6,16 +6,28 @@
 
 namespace gp::peers {
 
-PeerScene peer_scene(const Scene& scene) {
+std::string_view config_name(PeerConfig config) {
+  return config == PeerConfig::Default ? "default" : "matched";
+}
+
+std::optional<PeerConfig> config_from_name(std::string_view name) {
+  for (PeerConfig config : {PeerConfig::Default, PeerConfig::Matched}) {
+    if (config_name(config) == name) return config;
+  }
+  return std::nullopt;
+}
+
+PeerScene peer_scene(const Scene& scene, PeerConfig config) {
   const std::unique_ptr<Space> space = build_space(scene);
   const Settings defaults;
   const Settings& s = scene.settings;
-  PeerScene peer{s.gravity,    s.G, s.restitution_threshold, s.linear_slop, std::nullopt,
-                 std::nullopt, {}};
-  if (s.velocity_iterations != defaults.velocity_iterations) {
+  PeerScene peer{config,        s.gravity,    s.G,          s.restitution_threshold,
+                 s.linear_slop, std::nullopt, std::nullopt, {}};
+  const bool matched = config == PeerConfig::Matched;
+  if (matched || s.velocity_iterations != defaults.velocity_iterations) {
     peer.velocity_iterations = s.velocity_iterations;
   }
-  if (s.position_iterations != defaults.position_iterations) {
+  if (matched || s.position_iterations != defaults.position_iterations) {
     peer.position_iterations = s.position_iterations;
   }
   for (BodyId id = 0; id < space->body_count(); ++id) {

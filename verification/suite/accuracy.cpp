@@ -47,6 +47,12 @@ constexpr ContactBound kContactBounds[] = {
     {"pyramid6", {5e-3, 0.2}, {5e-3, 0.2}},       // 1.2e-3 m, 0.049 m/s
 };
 
+// Why the exact rows' limit sits far above their figures.
+constexpr const char* kExactReason =
+    "exact in exact arithmetic: the figure is rounding and the oracle's own error, which vary "
+    "with the platform; a fault on this path shows at first order, as symplectic Euler's 0.045 "
+    "rad to 1.1 m on the scenes where it is not exact";
+
 const ContactBound* contact_bound(std::string_view scene) {
   for (const auto& b : kContactBounds) {
     if (b.scene == scene) return &b;
@@ -88,13 +94,18 @@ std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const 
     const Scales scale = scales_of(cvode);
     const double position = agree.position / std::max(scale.position, 1.0);
     const double velocity = agree.velocity / std::max(scale.velocity, 1.0);
-    list.check(name + ": ARKODE against CVODE", "NFR:Correctness",
-               "position " + figure(position) + ", velocity " + figure(velocity) +
-                   " (relative to the largest |p|, |v|, at least 1), t_c " +
-                   figure(agree.collision_time) + " s",
-               "all ≤ 1e-9",
-               position <= 1e-9 && velocity <= 1e-9 && agree.collision_time <= 1e-9 &&
-                   agree.unmatched_impacts == 0);
+    list.within(name + ": ARKODE against CVODE", "NFR:Correctness",
+                "position " + figure(position) + ", velocity " + figure(velocity) +
+                    " (relative to the largest |p|, |v|, at least 1), t_c " +
+                    figure(agree.collision_time) + " s, " +
+                    std::to_string(agree.unmatched_impacts) + " unmatched impacts",
+                "all ≤ 1e-9, no unmatched impact",
+                {{position, 1e-9},
+                 {velocity, 1e-9},
+                 {agree.collision_time, 1e-9},
+                 {static_cast<double>(agree.unmatched_impacts), 0.0}},
+                "1e-9 is the accuracy the oracle claims (docs/oracle.md), which this row "
+                "establishes; two methods agreeing better is not asked of it");
     for (IntegratorKind kind : kIntegrators) {
       const Differences d = compare(run_engine(scene, kind, scene.dt), cvode);
       const std::string label =
@@ -108,15 +119,19 @@ std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const 
       if (const ContactBound* contact = contact_bound(name)) {
         const Bound& bound =
             kind == IntegratorKind::SymplecticEuler ? contact->first_order : contact->higher_order;
-        list.check(label, ids_of(cvode) + " IM:contact", measured,
-                   "position ≤ " + figure(bound.position) + " m, velocity ≤ " +
-                       figure(bound.velocity) +
-                       " m/s (as measured: sequential impulses with slop are not exact)",
-                   d.position <= bound.position && d.velocity <= bound.velocity);
+        list.within(label, ids_of(cvode) + " IM:contact", measured,
+                    "position ≤ " + figure(bound.position) + " m, velocity ≤ " +
+                        figure(bound.velocity) +
+                        " m/s (as measured: sequential impulses with slop are not exact)",
+                    {{d.position, bound.position}, {d.velocity, bound.velocity}});
       } else if (exact_expected(scene, kind)) {
-        list.check(label, ids_of(cvode), measured, "position, velocity and t_c ≤ 1e-9",
-                   d.position <= 1e-9 && d.velocity <= 1e-9 && d.collision_time <= 1e-9 &&
-                       d.unmatched_impacts == 0);
+        list.within(label, ids_of(cvode), measured,
+                    "position, velocity and t_c ≤ 1e-9, no unmatched impact",
+                    {{d.position, 1e-9},
+                     {d.velocity, 1e-9},
+                     {d.collision_time, 1e-9},
+                     {static_cast<double>(d.unmatched_impacts), 0.0}},
+                    kExactReason);
       } else {
         list.report(label, ids_of(cvode), measured);
       }

@@ -131,9 +131,11 @@ std::vector<Check> closed_form_checks(const std::vector<NamedScene>& scenes,
         worst = std::max(worst, relative(s.angular_velocity, m.angular_velocity));
       }
     }
-    list.check(std::string(c.scene) + ": " + c.law + ", cvode-adams, rtol = atol = 1e-12",
-               "IM:transMot IM:rotMot", "largest relative difference " + figure(worst), "≤ 1e-9",
-               worst <= 1e-9);
+    list.within(std::string(c.scene) + ": " + c.law + ", cvode-adams, rtol = atol = 1e-12",
+                "IM:transMot IM:rotMot", "largest relative difference " + figure(worst), "≤ 1e-9",
+                {{worst, 1e-9}},
+                "1e-9 is the accuracy the oracle claims (docs/oracle.md), which this row "
+                "establishes; at rest or in free fall it is exact to rounding");
   }
   return list.rows();
 }

@@ -29,9 +29,10 @@ struct SpeedSection {
 /// The target for `workload`, empty when it names none.
 std::string speed_target(const std::string& workload);
 
-/// The table as text, the header first: per workload and engine the runs, the median, min and
-/// max wall time [ms], on the peers' rows ours/engine and whether it is below 1, body-steps per
-/// second, the watched body's displacement and, on the first row of a workload, its target.
+/// The table as text, the header first: per workload and engine its precision and build, the runs,
+/// the median, min and max wall time [ms], on the peers' rows ours/engine and whether it is below
+/// 1, body-steps per second, the watched body's displacement and, on the first row of a workload,
+/// its target.
 std::vector<std::vector<std::string>> speed_cells(const SpeedTable& table);
 
 /// Times every headline workload (bench::headline_workloads) o.speed_repetitions times in each

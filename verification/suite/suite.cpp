@@ -23,6 +23,7 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
   add(peer_checks(scenes, o, data));
   add(pile_checks(scenes, o, data));
   if (!o.quick) add(work_precision_checks(scenes, o, data));
+  add(criteria_level_checks(checks, o));
   const SpeedSection speed = speed_against_peers(o);
   write_report(o.out, checks, data, {}, speed);
   const auto plots = make_plots(o.root / "verification" / "suite" / "plots.py", o.out);

@@ -58,7 +58,8 @@ std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
         ++points;
       }
     }
-    // The peers at the same step sizes: Chipmunk2D and Box2D as points on the same diagram.
+    // The peers at the same step sizes, matched to our physics (our iterations, slop and
+    // combining rule): their symplectic Euler beside ours on the same diagram.
     for (const auto engine : {peers::PeerEngine::Chipmunk, peers::PeerEngine::Box2d}) {
       for (int k = 0; k < (o.quick ? 2 : 6); ++k) {
         Scene stepped = scene;
@@ -87,7 +88,9 @@ std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
       ++points;
     }
     list.report(name, "LC:Variable-ODE-Solver NFR:Performance",
-                std::to_string(points) + " points: work-precision diagram wp_" + name + ".png" +
+                std::to_string(points) + " points: work-precision diagram wp_" + name +
+                    ".png; ours (double) with each integrator, Chipmunk2D (double) and Box2D "
+                    "(float) matched, both symplectic Euler" +
                     (skipped.empty() ? "" : "; not drawn:" + skipped));
   }
   data.emplace_back("work_precision.csv", csv.str());
