@@ -100,12 +100,13 @@ std::vector<Check> long_run_rows(const std::string& label, const LongRunResult& 
                  ", largest |x| or |y| " + figure(r.max_abs_coordinate) + " m",
              "within " + figure(kBoxMargin) + " m of the walls and starting heights",
              r.first_outside.empty());
-  list.check(label + ": resident memory does not grow", "NFR:Performance",
-             figure(r.memory.front().rss_mib) + " MiB at the start, " +
-                 figure(r.memory.back().rss_mib) + " MiB at the end, growth " +
-                 figure(r.memory_growth_mib()) + " MiB after the first tenth",
-             "growth ≤ " + figure(kMaxMemoryGrowthMib) + " MiB",
-             r.memory_growth_mib() <= kMaxMemoryGrowthMib);
+  list.within(label + ": resident memory does not grow", "NFR:Performance",
+              figure(r.memory.front().rss_mib) + " MiB at the start, " +
+                  figure(r.memory.back().rss_mib) + " MiB at the end, growth " +
+                  figure(r.memory_growth_mib()) + " MiB after the first tenth",
+              "growth ≤ " + figure(kMaxMemoryGrowthMib) + " MiB",
+              {{r.memory_growth_mib(), kMaxMemoryGrowthMib}},
+              "the allocator may keep freed pages; a leak of 100 B a step would grow 95 MiB");
   list.report(label + ": wall time", "NFR:Performance",
               figure(r.wall_seconds) + " s, " +
                   figure(1e3 * r.wall_seconds / static_cast<double>(std::max(1L, r.steps_done))) +
