@@ -4,6 +4,10 @@ argument: a test compares that output with the committed files): the large ones,
 and rain1000.json, and the contact scenes of the oracle (bodies resting, sliding, rolling,
 tipping, settling), whose placements on slopes are computed here.
 
+With `--bench DIR` it writes instead the benchmark scenes of Box2D 3's suite (its
+shared/benchmarks.c), too large to commit, which the build generates for gamephysics_bench:
+large_pyramid.json, many_pyramids.json and tumbler.json.
+
 Positions are on regular grids (no randomness), so the files are reproducible; run
 `python3 scenes/generate.py` after changing this script and commit its output. One body per line
 keeps the files small and their diffs readable. Standard library only.
@@ -14,7 +18,8 @@ import math
 import sys
 from pathlib import Path
 
-OUT = Path(sys.argv[1]) if len(sys.argv) > 1 else Path(__file__).resolve().parent
+BENCH = len(sys.argv) > 2 and sys.argv[1] == "--bench"
+OUT = Path(sys.argv[-1]) if len(sys.argv) > 1 else Path(__file__).resolve().parent
 GRAVITY = [0, -9.81]
 DT = 1 / 60  # the game step
 
@@ -175,7 +180,83 @@ def contact_scenes():
     }, discs)
 
 
+# Box2D 3's benchmarks run at 60 Hz under g = -10 m/s², density 1 and friction 0.6, sleeping off.
+BENCH_GRAVITY = [0, -10]
+
+
+def bench_box(x, y, half):
+    return {"position": [x, y],
+            "shapes": [{"type": "box", "width": 2 * half, "height": 2 * half, "friction": 0.6}]}
+
+
+def large_pyramid():
+    """5050 unit boxes in a pyramid of base 100 on a ground box 200 m x 2 m; 500 steps."""
+    base, a = 100, 0.5
+    bodies = [{"name": "ground", "type": "static", "position": [0, -1],
+               "shapes": [{"type": "box", "width": 200, "height": 2, "friction": 0.6}]}]
+    for i in range(base):
+        y = (2 * i + 1) * a
+        for j in range(i, base):
+            x = (i + 1) * a + 2 * (j - i) * a - a * base
+            bodies.append({"name": f"box{i:03d}_{j:03d}", **bench_box(x, y, a)})
+    write_scene("large_pyramid.json", {
+        "description": "Box2D 3's large_pyramid: 5050 unit boxes, base 100, on a 200 m ground box.",
+        "gravity": BENCH_GRAVITY, "dt": DT, "duration": 500 * DT, "output_dt": 500 * DT,
+    }, bodies)
+
+
+def many_pyramids():
+    """20 x 20 pyramids of base 10 (22,000 boxes) on 20 ground segments; 200 steps."""
+    base, extent, rows, columns = 10, 0.5, 20, 20
+    ground_dy = 2 * extent * (base + 1)
+    ground_width = 2 * extent * columns * (base + 1)
+    ground = {"name": "ground", "type": "static", "position": [0, 0], "shapes": [
+        {"type": "segment", "a": [-0.5 * ground_width, r * ground_dy],
+         "b": [0.5 * ground_width, r * ground_dy], "friction": 0.6} for r in range(rows)]}
+    bodies = [ground]
+    base_width = 2 * extent * base
+    for r in range(rows):
+        base_y = r * ground_dy
+        for c in range(columns):
+            center_x = -0.5 * ground_width + c * (base_width + 2 * extent) + 2 * extent
+            for i in range(base):
+                y = (2 * i + 1) * extent + base_y
+                for j in range(i, base):
+                    x = (i + 1) * extent + 2 * (j - i) * extent + center_x - 0.5
+                    bodies.append({"name": f"p{r:02d}_{c:02d}_{i}_{j}", **bench_box(x, y, extent)})
+    write_scene("many_pyramids.json", {
+        "description": "Box2D 3's many_pyramids: 400 pyramids of base 10, 22,000 boxes.",
+        "gravity": BENCH_GRAVITY, "dt": DT, "duration": 200 * DT, "output_dt": 200 * DT,
+    }, bodies)
+
+
+def tumbler():
+    """2025 boxes of 0.25 m in a hollow 20 m box turning at 25°/s about its centre; 750 steps.
+    Box2D drives its tumbler with a motor joint; here the box is kinematic."""
+    walls = []
+    for cx, cy, hx, hy in ((10, 0, 0.5, 10), (-10, 0, 0.5, 10), (0, 10, 10, 0.5), (0, -10, 10, 0.5)):
+        walls.append({"type": "polygon", "friction": 0.6, "vertices": [
+            [cx - hx, cy - hy], [cx + hx, cy - hy], [cx + hx, cy + hy], [cx - hx, cy + hy]]})
+    bodies = [{"name": "tumbler", "type": "kinematic", "position": [0, 10],
+               "angular_velocity": math.radians(25), "shapes": walls}]
+    grid = 45
+    for i in range(grid):
+        y = -0.2 * grid + 10 + 0.4 * i
+        for j in range(grid):
+            x = -0.2 * grid + 0.4 * j
+            bodies.append({"name": f"box{i:02d}_{j:02d}", **bench_box(x, y, 0.125)})
+    write_scene("tumbler.json", {
+        "description": "Box2D 3's tumbler: 2025 small boxes in a hollow box turning at 25°/s.",
+        "gravity": BENCH_GRAVITY, "dt": DT, "duration": 750 * DT, "output_dt": 750 * DT,
+    }, bodies)
+
+
 if __name__ == "__main__":
-    pyramid20()
-    rain1000()
-    contact_scenes()
+    if BENCH:
+        large_pyramid()
+        many_pyramids()
+        tumbler()
+    else:
+        pyramid20()
+        rain1000()
+        contact_scenes()

@@ -95,9 +95,11 @@ TEST_CASE("Every engine runs a workload and the summary gives medians and ratios
   CHECK(all[0].body_steps_per_s == Approx(4 * 100 / 0.020));
   CHECK(all[1].moved_m == 0.25);
   CHECK(all[1].heap_bytes == 2048.0);
+  CHECK(all[1].bodies == 4);
   std::ostringstream out;
   gp::bench::print_summary(out, all);
-  CHECK_THAT(out.str(), Catch::Contains("4.00"));  // ours/chipmunk: 20 ms / 5 ms
+  CHECK_THAT(out.str(), Catch::Contains("4.00"));    // ours/chipmunk: 20 ms / 5 ms
+  CHECK_THAT(out.str(), Catch::Contains(" 512\n"));  // heap per body: 2048 B over 4 bodies
   CHECK_THAT(out.str(), Catch::Contains("moved 0.25 m in chipmunk-default"));
 }
 

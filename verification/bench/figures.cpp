@@ -36,6 +36,7 @@ Figures figures_of(const Workload& w, std::string engine, const std::vector<doub
   f.stddev_ms = sample_stddev(ms);
   f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
   f.moved_m = moved_m;
+  f.bodies = w.scene.bodies.size();
   return f;
 }
 

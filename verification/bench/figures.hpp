@@ -22,6 +22,7 @@ struct Figures {
   double body_steps_per_s = 0.0;
   double moved_m = -1.0;     ///< negative when the workload watches no body
   double heap_bytes = -1.0;  ///< held at the end of a run; negative when not measured
+  std::size_t bodies = 0;    ///< of the workload's scene
 };
 
 /// The figures of the repetitions of `w` in `engine` that took `ms` (not empty) each.

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
 
   const std::vector<gp::bench::Workload> workloads =
-      gp::bench::workloads(std::string(GP_SOURCE_DIR) + "/scenes", quick);
+      gp::bench::workloads(std::string(GP_SOURCE_DIR) + "/scenes", GP_BENCH_SCENES, quick);
   gp::bench::register_benchmarks(workloads);
   // Described before printing, so that Chipmunk's banner on its first space comes first.
   const std::vector<std::string> engines = gp::bench::engine_settings(workloads.front().scene);

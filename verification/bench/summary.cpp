@@ -69,20 +69,24 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
 
 void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   out << "\nSummary: wall time of one whole run [ms]; ours/engine = our median / the engine's "
-         "(above 1: ours is slower); heap the engine holds at the end of a run [KiB]\n";
-  char line[180];
-  std::snprintf(line, sizeof line, "%-10s %-16s %4s %10s %10s %10s %9s %11s %14s %10s\n",
+         "(above 1: ours is slower); heap the engine holds at the end of a run [KiB], and per "
+         "body [B]\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "%-13s %-16s %4s %10s %10s %10s %9s %11s %14s %10s %9s\n",
                 "workload", "engine", "reps", "median", "min", "max", "stddev", "ours/engine",
-                "body-steps/s", "heap");
+                "body-steps/s", "heap", "heap/body");
   out << line;
   for (const Figures& f : all) {
     const auto ratio_value = ours_over_engine(all, f);
     const std::string ratio = ratio_value ? formatted("%.2f", *ratio_value) : "-";
-    const std::string heap = f.heap_bytes >= 0.0 ? formatted("%.0f", f.heap_bytes / 1024) : "-";
-    std::snprintf(line, sizeof line,
-                  "%-10s %-16s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s\n",
-                  f.workload.c_str(), f.engine.c_str(), f.repetitions, f.median_ms, f.min_ms,
-                  f.max_ms, f.stddev_ms, ratio.c_str(), f.body_steps_per_s, heap.c_str());
+    const bool measured = f.heap_bytes >= 0.0 && f.bodies > 0;
+    const std::string heap = measured ? formatted("%.0f", f.heap_bytes / 1024) : "-";
+    const std::string per_body =
+        measured ? formatted("%.0f", f.heap_bytes / static_cast<double>(f.bodies)) : "-";
+    std::snprintf(
+        line, sizeof line, "%-13s %-16s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s %9s\n",
+        f.workload.c_str(), f.engine.c_str(), f.repetitions, f.median_ms, f.min_ms, f.max_ms,
+        f.stddev_ms, ratio.c_str(), f.body_steps_per_s, heap.c_str(), per_body.c_str());
     out << line;
   }
   for (const Figures& f : all) {

@@ -81,23 +81,43 @@ Scene rain(std::size_t balls) {
   return scene;
 }
 
+BodyId highest_body(const Scene& scene) {
+  BodyId top = 0;
+  for (BodyId id = 1; id < scene.bodies.size(); ++id) {
+    if (scene.bodies[id].position.y() > scene.bodies[top].position.y()) top = id;
+  }
+  return top;
+}
+
 std::vector<Workload> headline_workloads(const std::filesystem::path& scenes_dir) {
   std::vector<Workload> list;
   list.push_back({"free10000", free_fall(10000), kFreeFallSteps, std::nullopt});
   list.push_back({"rain1000", load_scene(scenes_dir / "rain1000.json"), kRunSteps, std::nullopt});
   Scene pyramid = load_scene(scenes_dir / "pyramid20.json");
-  BodyId top = 0;
-  for (BodyId id = 1; id < pyramid.bodies.size(); ++id) {
-    if (pyramid.bodies[id].position.y() > pyramid.bodies[top].position.y()) top = id;
-  }
+  const BodyId top = highest_body(pyramid);
   list.push_back({"pyramid20", std::move(pyramid), kRunSteps, top});
   return list;
 }
 
-std::vector<Workload> workloads(const std::filesystem::path& scenes_dir, bool quick) {
+std::vector<Workload> box2d_workloads(const std::filesystem::path& bench_scenes_dir, bool quick) {
+  std::vector<Workload> list;
+  const auto watched = [&](const char* name, int steps) {
+    Scene scene = load_scene(bench_scenes_dir / (std::string(name) + ".json"));
+    const BodyId top = highest_body(scene);
+    list.push_back({name, std::move(scene), steps, top});
+  };
+  watched("large_pyramid", 500);
+  if (!quick) watched("many_pyramids", 200);
+  list.push_back({"tumbler", load_scene(bench_scenes_dir / "tumbler.json"), 750, std::nullopt});
+  return list;
+}
+
+std::vector<Workload> workloads(const std::filesystem::path& scenes_dir,
+                                const std::filesystem::path& bench_scenes_dir, bool quick) {
   std::vector<Workload> list = headline_workloads(scenes_dir);
   list.push_back({"rain4000", rain(4000), kRunSteps, std::nullopt});
   if (!quick) list.push_back({"rain16000", rain(16000), kRunSteps, std::nullopt});
+  for (Workload& w : box2d_workloads(bench_scenes_dir, quick)) list.push_back(std::move(w));
   return list;
 }
 

@@ -43,8 +43,17 @@ Scene rain(std::size_t balls);
 /// 1000 steps each.
 std::vector<Workload> headline_workloads(const std::filesystem::path& scenes_dir);
 
+/// The highest body of `scene` (a pyramid's top box), whose displacement a workload reports.
+BodyId highest_body(const Scene& scene);
+
+/// Box2D 3's benchmark scenes, written by `scenes/generate.py --bench DIR`, with its step counts:
+/// large_pyramid (500 steps) and many_pyramids (200), each with its highest box watched, and
+/// tumbler (750); `quick` leaves out many_pyramids.
+std::vector<Workload> box2d_workloads(const std::filesystem::path& bench_scenes_dir, bool quick);
+
 /// The headline workloads, then rain4000 and rain16000 (rain(), 1000 steps each) for how the
-/// engines scale; `quick` leaves out rain16000.
-std::vector<Workload> workloads(const std::filesystem::path& scenes_dir, bool quick);
+/// engines scale, then box2d_workloads(); `quick` leaves out rain16000 and many_pyramids.
+std::vector<Workload> workloads(const std::filesystem::path& scenes_dir,
+                                const std::filesystem::path& bench_scenes_dir, bool quick);
 
 }  // namespace gp::bench
