@@ -112,12 +112,24 @@ std::vector<Workload> box2d_workloads(const std::filesystem::path& bench_scenes_
   return list;
 }
 
+Workload sleeping(Workload w) {
+  w.name += "_sleep";
+  w.scene.settings.sleep = true;
+  return w;
+}
+
 std::vector<Workload> workloads(const std::filesystem::path& scenes_dir,
                                 const std::filesystem::path& bench_scenes_dir, bool quick) {
   std::vector<Workload> list = headline_workloads(scenes_dir);
   list.push_back({"rain4000", rain(4000), kRunSteps, std::nullopt});
   if (!quick) list.push_back({"rain16000", rain(16000), kRunSteps, std::nullopt});
   for (Workload& w : box2d_workloads(bench_scenes_dir, quick)) list.push_back(std::move(w));
+  // Settled piles with sleeping on (ours; the peers sleep as their configuration says).
+  for (std::size_t i = 0, n = list.size(); i < n; ++i) {
+    if (list[i].name == "pyramid20" || list[i].name == "many_pyramids") {
+      list.push_back(sleeping(list[i]));
+    }
+  }
   return list;
 }
 

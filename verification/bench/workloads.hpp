@@ -51,8 +51,12 @@ BodyId highest_body(const Scene& scene);
 /// tumbler (750); `quick` leaves out many_pyramids.
 std::vector<Workload> box2d_workloads(const std::filesystem::path& bench_scenes_dir, bool quick);
 
+/// `w` with sleeping on (Settings::sleep), named w.name + "_sleep".
+Workload sleeping(Workload w);
+
 /// The headline workloads, then rain4000 and rain16000 (rain(), 1000 steps each) for how the
-/// engines scale, then box2d_workloads(); `quick` leaves out rain16000 and many_pyramids.
+/// engines scale, then box2d_workloads(), then pyramid20 and many_pyramids with sleeping on;
+/// `quick` leaves out rain16000 and many_pyramids.
 std::vector<Workload> workloads(const std::filesystem::path& scenes_dir,
                                 const std::filesystem::path& bench_scenes_dir, bool quick);
 
