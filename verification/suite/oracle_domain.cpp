@@ -17,8 +17,9 @@ constexpr std::pair<std::string_view, std::string_view> kOutside[] = {
      "1,700 unknowns, and every right-hand side solves a dense system of about 840 forces; far "
      "too slow (pyramid6, 21 boxes, takes 0.5 s a simulated second)"},
     {"rain1000",
-     "1000 discs with friction collide while sliding: the oracle's impacts are frictionless "
-     "(IM:col2D), so it stops with OracleDomainError"},
+     "1000 discs falling into a pile: the oracle watches about 500,000 pairs of hulls (every two "
+     "discs) at every stop of its root finder and resolves the pile one event at a time; "
+     "settle50, 50 discs, is already beyond it (see there)"},
     {"hard case cradle, balls touching",
      "five touching balls struck at once: the oracle resolves simultaneous impacts by Newton's "
      "law at every contact at once (one LCP), which does not pass the velocity along ball by "

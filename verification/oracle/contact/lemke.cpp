@@ -1,5 +1,6 @@
 #include "verification/oracle/contact/lemke.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -36,29 +37,25 @@ class Tableau {
     return leaving;
   }
 
-  /// The row whose basic variable leaves when `column` enters (minimum ratio test), preferring
-  /// z₀ among ties so that the method ends as soon as it can, then the lowest basic variable;
-  /// -1 on a ray (no row limits the entering variable).
+  /// The row whose basic variable leaves when `column` enters (minimum ratio test), z₀ among
+  /// ties so that the method ends as soon as it can, else the lexicographically least row of
+  /// [rhs, B⁻¹] / pivot: the rule that keeps Lemke's method from cycling on degenerate problems
+  /// (redundant contacts leave many zero right-hand sides); -1 on a ray (no row limits the
+  /// entering variable).
   Eigen::Index leaving_row(Eigen::Index column, double tolerance) const {
-    Eigen::Index best = -1;
-    double best_ratio = std::numeric_limits<double>::infinity();
+    double least = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < n_; ++i) {
       const double a = t_(i, column);
-      if (a <= tolerance) continue;
-      const double ratio = std::max(rhs(i), 0.0) / a;
-      if (best < 0) {
-        best = i;
-        best_ratio = ratio;
-        continue;
-      }
-      const double slack = 1e-12 * std::max(1.0, best_ratio);
-      const bool better = ratio < best_ratio - slack;
-      const bool tie = !better && ratio <= best_ratio + slack;
-      if (better || (tie && (basis_[i] == artificial() ||
-                             (basis_[best] != artificial() && basis_[i] < basis_[best])))) {
-        best = i;
-        best_ratio = std::min(best_ratio, ratio);
-      }
+      if (a > tolerance) least = std::min(least, std::max(rhs(i), 0.0) / a);
+    }
+    if (!std::isfinite(least)) return -1;
+    const double slack = 1e-12 * std::max(1.0, least);
+    Eigen::Index best = -1;
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      const double a = t_(i, column);
+      if (a <= tolerance || std::max(rhs(i), 0.0) / a > least + slack) continue;
+      if (basis_[i] == artificial()) return i;
+      if (best < 0 || lexicographically_less(i, best, column)) best = i;
     }
     return best;
   }
@@ -72,6 +69,21 @@ class Tableau {
   }
 
  private:
+  // Row i's [B⁻¹] / its pivot entry before row k's, entry by entry (B⁻¹ is the tableau's first n
+  // columns, the identity of w at the start).
+  bool lexicographically_less(Eigen::Index i, Eigen::Index k, Eigen::Index column) const {
+    const double ai = t_(i, column);
+    const double ak = t_(k, column);
+    for (Eigen::Index j = 0; j < n_; ++j) {
+      const double u = t_(i, j) / ai;
+      const double v = t_(k, j) / ak;
+      const double slack = 1e-12 * std::max({1.0, std::abs(u), std::abs(v)});
+      if (u < v - slack) return true;
+      if (u > v + slack) return false;
+    }
+    return basis_[i] < basis_[k];
+  }
+
   Eigen::Index n_;
   Eigen::MatrixXd t_;
   std::vector<Eigen::Index> basis_;
