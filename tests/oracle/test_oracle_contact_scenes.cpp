@@ -298,3 +298,44 @@ TEST_CASE("oracle: a jammed hexagonal lattice of equal discs stays at rest", "[o
   CHECK(r.events.empty());
   CHECK(r.largest_drift <= kDrift);
 }
+
+TEST_CASE("oracle: a disc dropped into a pocket of a jammed lattice stops dead, the lattice holds",
+          "[oracle][contact]") {
+  // The lattice's top row (four discs) leaves a pocket at x = 0, √3/2 m above it; a disc dropped
+  // 0.5 m into it (C_R = 0) strikes two discs at once, symmetrically, and the rigid lattice
+  // takes the whole impulse m v through its redundant contacts to the box: it stops dead.
+  const double friction = GENERATE(0.0, 0.5);
+  INFO("mu = " << friction);
+  gp::Scene scene = jammed_lattice(4, friction);
+  const double rest = 0.5 + 4.0 * std::sqrt(3.0) / 2.0, drop = 0.5;
+  gp::BodyDef disc;
+  disc.name = "dropped";
+  disc.mass = 1.0;
+  disc.position = {0.0, rest + drop};
+  disc.shapes.push_back({gp::Shape::circle(0.5), 0.0, friction});
+  scene.bodies.push_back(disc);
+  const double landing = std::sqrt(2.0 * drop / kG);
+  const OracleResult r = run_oracle(scene, std::vector<double>{0.5 * landing, 1.0});
+  REQUIRE_FALSE(r.events.empty());
+  double impulse = 0.0;
+  for (const auto& e : r.events) {
+    check_near(e.time, landing);
+    if (e.body_a == scene.bodies.size() - 1 || e.body_b == scene.bodies.size() - 1) {
+      impulse += std::abs(e.normal.y()) * e.impulse;
+    }
+  }
+  check_near(impulse, kG * landing);  // m v, the disc of 1 kg
+  const gp::BodyState& falling = r.states[0].back();
+  check_near(falling.position.y(), rest + drop - 0.5 * kG * 0.25 * landing * landing);
+  const gp::BodyState& stopped = r.states[1].back();
+  check_near(stopped.position.x(), 0.0);
+  check_near(stopped.position.y(), rest);
+  check_near(stopped.velocity.norm(), 0.0);
+  for (std::size_t b = 1; b + 1 < scene.bodies.size(); ++b) {
+    INFO(scene.bodies[b].name);
+    check_near(r.states[1][b].position.x(), scene.bodies[b].position.x());
+    check_near(r.states[1][b].position.y(), scene.bodies[b].position.y());
+    check_near(r.states[1][b].velocity.norm(), 0.0);
+  }
+  CHECK(r.largest_drift <= kDrift);
+}

@@ -27,14 +27,11 @@ constexpr std::pair<std::string_view, std::string_view> kOutside[] = {
      "after the impact); the case checks the sequential model, the closed form is its "
      "reference"},
     {"settle50",
-     "50 frictionless discs never settle: the oracle passes its bound of 10,000 events at "
-     "t = 1.17 s of 3 s (cvode-adams, rtol 1e-12, 23 s of CPU). 99.9 % of the events are "
-     "contact onsets: discs that lift off at zero speed, found touching again on the solver's "
-     "noise every 2e-7 s, and contacts that an impact elsewhere leaves parting just above the "
-     "rest speed, which fall back and impact again (with the onset depth raised to 1e-10 m, "
-     "still 2,000 to 4,000 events per 0.1 s at t = 1 s, 10,000 by t = 1.6 s). Without "
-     "friction the pile loses energy only in impacts; with friction its impacts slide, and the "
-     "oracle's impacts are frictionless (IM:col2D)"},
+     "50 discs falling into a heap: the oracle passes its bound of 10,000 events at t = 1.58 s "
+     "of 3 s (cvode-adams, rtol 1e-12, 39 s of CPU), most of them impacts cascading through the "
+     "heap; with friction (0.2 to 0.5, C_R 0 to 0.2) it stops by t = 1.07 s, on 10,000 events or "
+     "on a contact problem with sliding contacts that has no solution Lemke's method reaches "
+     "(docs/oracle.md)"},
 };
 
 }  // namespace

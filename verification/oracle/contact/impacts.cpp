@@ -10,6 +10,8 @@ namespace gp::oracle {
 
 namespace {
 
+constexpr double kRegularisation = 1e-14;
+
 double restitution_of(const ActiveContact& c, const ContactKinematics& k, double rest_speed) {
   return k.gap_rate < -rest_speed ? c.restitution : 0.0;
 }
@@ -55,9 +57,17 @@ std::vector<Impulse> resolve_impacts(const World& world, std::span<const ActiveC
                     (1.0 + restitution_of(c, kinematics[i], rest_speed)) * arrival,
                     dot(tangent, velocity, angular_velocity), c.friction, c.friction > 0.0});
   }
-  const FrictionLcp lcp = friction_lcp(world, rows);
-  const auto z = solve_lcp(lcp.M, lcp.q);
-  if (!z) throw std::runtime_error("oracle: no impulses satisfy Newton's law at the contacts");
+  FrictionLcp lcp = friction_lcp(world, rows);
+  auto z = solve_lcp(lcp.M, lcp.q);
+  if (!z) {
+    // The problem has a solution (its matrix is copositive, and q is of Anitescu and Potra's
+    // form), but degenerate ones (a pile: dozens of contacts, most at rest) can end Lemke's method
+    // on a ray by round-off. M + εI is strictly copositive, which it always solves; ε = 1e-14 of
+    // the largest diagonal entry moves the impulses by about that share of themselves.
+    lcp.M.diagonal().array() += kRegularisation * lcp.M.diagonal().cwiseAbs().maxCoeff();
+    z = solve_lcp(lcp.M, lcp.q);
+  }
+  if (!z) throw std::runtime_error("no impulses satisfy Newton's and Coulomb's laws");
   for (Eigen::Index k = 0; k < z->size(); ++k) {
     add_response(world, lcp.push[static_cast<std::size_t>(k)], (*z)[k], velocity, angular_velocity);
   }

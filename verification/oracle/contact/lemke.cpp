@@ -9,6 +9,10 @@ namespace gp::oracle {
 
 namespace {
 
+// How the ratio test breaks ties: by the lowest basic variable (fast, and what every problem but
+// the most degenerate needs), or lexicographically on [B⁻¹] / pivot, the rule that cannot cycle.
+enum class Ties { LowestVariable, Lexicographic };
+
 // The tableau [I  −M  −e | q] of Lemke's method: n rows, columns 0..n−1 for w, n..2n−1 for z,
 // 2n for the artificial variable z₀ and 2n+1 for the right-hand side.
 class Tableau {
@@ -38,11 +42,9 @@ class Tableau {
   }
 
   /// The row whose basic variable leaves when `column` enters (minimum ratio test), z₀ among
-  /// ties so that the method ends as soon as it can, else the lexicographically least row of
-  /// [rhs, B⁻¹] / pivot: the rule that keeps Lemke's method from cycling on degenerate problems
-  /// (redundant contacts leave many zero right-hand sides); -1 on a ray (no row limits the
-  /// entering variable).
-  Eigen::Index leaving_row(Eigen::Index column, double tolerance) const {
+  /// ties so that the method ends as soon as it can, else by `ties`; -1 on a ray (no row limits
+  /// the entering variable).
+  Eigen::Index leaving_row(Eigen::Index column, double tolerance, Ties ties) const {
     double least = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < n_; ++i) {
       const double a = t_(i, column);
@@ -55,7 +57,10 @@ class Tableau {
       const double a = t_(i, column);
       if (a <= tolerance || std::max(rhs(i), 0.0) / a > least + slack) continue;
       if (basis_[i] == artificial()) return i;
-      if (best < 0 || lexicographically_less(i, best, column)) best = i;
+      if (best < 0 || (ties == Ties::Lexicographic ? lexicographically_less(i, best, column)
+                                                   : basis_[i] < basis_[best])) {
+        best = i;
+      }
     }
     return best;
   }
@@ -91,7 +96,10 @@ class Tableau {
 
 }  // namespace
 
-std::optional<Eigen::VectorXd> solve_lcp(const Eigen::MatrixXd& M, const Eigen::VectorXd& q) {
+namespace {
+
+std::optional<Eigen::VectorXd> lemke(const Eigen::MatrixXd& M, const Eigen::VectorXd& q,
+                                     Ties ties) {
   const Eigen::Index n = q.size();
   Eigen::Index start = 0;
   if (n == 0 || q.minCoeff(&start) >= 0.0) return Eigen::VectorXd::Zero(n);
@@ -102,7 +110,7 @@ std::optional<Eigen::VectorXd> solve_lcp(const Eigen::MatrixXd& M, const Eigen::
   // Each pivot visits a distinct almost-complementary basis; far fewer than these are needed.
   const Eigen::Index limit = 50 * (n + 1);
   for (Eigen::Index step = 0; step < limit; ++step) {
-    const Eigen::Index row = tableau.leaving_row(entering, tolerance);
+    const Eigen::Index row = tableau.leaving_row(entering, tolerance, ties);
     if (row < 0) return std::nullopt;
     const Eigen::Index leaving = tableau.pivot(row, entering);
     if (leaving == tableau.artificial()) {
@@ -116,6 +124,15 @@ std::optional<Eigen::VectorXd> solve_lcp(const Eigen::MatrixXd& M, const Eigen::
     entering = tableau.complement(leaving);
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Eigen::VectorXd> solve_lcp(const Eigen::MatrixXd& M, const Eigen::VectorXd& q) {
+  // Redundant contacts (a jammed lattice, a pile) give degenerate problems with many zero
+  // right-hand sides, on which the first rule can cycle or end on a ray.
+  if (auto z = lemke(M, q, Ties::LowestVariable)) return z;
+  return lemke(M, q, Ties::Lexicographic);
 }
 
 }  // namespace gp::oracle

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "gamephysics/models/dd/kinetic_energy.hpp"
 #include "verification/oracle/contact/contact_modes.hpp"
@@ -153,8 +154,13 @@ void ContactEvents::settle(double t, std::vector<Motion>& motions,
       angular_velocity.push_back(m.angular_velocity);
     }
     const double before = kinetic_energy(w, velocity, angular_velocity);
-    const std::vector<Impulse> p =
-        resolve_impacts(w, candidates, k, options_.rest_speed, velocity, angular_velocity);
+    std::vector<Impulse> p;
+    try {
+      p = resolve_impacts(w, candidates, k, options_.rest_speed, velocity, angular_velocity);
+    } catch (const std::runtime_error& e) {
+      throw OracleDomainError(
+          std::string("the impact has no solution Lemke's method reaches: ") + e.what(), t);
+    }
     const double after = kinetic_energy(w, velocity, angular_velocity);
     // A kinematic body is an unbounded source of energy (a paddle bats a ball): no check there.
     const bool closed = std::none_of(candidates.begin(), candidates.end(), [&](const auto& c) {
