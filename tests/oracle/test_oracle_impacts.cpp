@@ -95,12 +95,9 @@ TEST_CASE("oracle impacts: Newton's and Coulomb's laws hold at random simultaneo
         {{0.0, 0.0}, 0.0, Vec2::Zero(), 0.0},
         {{1.3, 0.5}, 0.0, {-0.5 + 0.3 * uniform(random), 0.1 * uniform(random)}, uniform(random)}};
     const auto before = kinematics(contacts, motions);
-    std::vector<Vec2> v;
-    std::vector<double> omega;
-    for (const Motion& m : motions) {
-      v.push_back(m.velocity);
-      omega.push_back(m.angular_velocity);
-    }
+    std::vector<Vec2> v = {motions[0].velocity, motions[1].velocity, motions[2].velocity};
+    std::vector<double> omega = {motions[0].angular_velocity, motions[1].angular_velocity,
+                                 motions[2].angular_velocity};
     const double e_before = energy(w, v, omega);
     const auto p = gp::oracle::resolve_impacts(w, contacts, before, kRest, v, omega);
     for (std::size_t b = 0; b < motions.size(); ++b) {
