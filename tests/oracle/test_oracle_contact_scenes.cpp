@@ -1,9 +1,8 @@
 // The oracle through contact, against closed forms on the shipped contact scenes: a block
 // sliding down a ramp, a disc rolling without slipping, a box held by static friction, a box
-// dropped flat that comes to rest, a stack at rest, a box tipping over the edge of a step and one
-// sliding off the end of a line;
-// each within 1e-9 with every method, its constraints held to 1e-12 m, and CVODE and ARKODE
-// agreeing to 1e-9.
+// dropped flat that comes to rest (and one landing while it slides), a stack at rest, a box tipping
+// over the edge of a step and one sliding off the end of a line; each within 1e-9 with every
+// method, its constraints held to 1e-12 m, and CVODE and ARKODE agreeing to 1e-9.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -125,6 +124,43 @@ TEST_CASE("oracle: a box dropped flat with C_R = 0 lands at sqrt(2h/g) and rests
   }
 }
 
+TEST_CASE("oracle: a box landing flat while sliding loses mu v_y at impact, then slides to rest",
+          "[oracle][contact]") {
+  // box_drop with μ = 0.1 and vₓ = 1 m/s: both corners land at once (C_R = 0) at v_y = g t_L;
+  // the impact's friction impulse is μ m v_y < m vₓ, so it slides on at vₓ − μ v_y, decelerates
+  // at μ g and stops. Its normal impulses differ so that it does not turn.
+  gp::Scene scene = shipped("box_drop");
+  constexpr double kMu = 0.1, kVx = 1.0;
+  for (gp::BodyDef& body : scene.bodies) body.shapes[0].friction = kMu;
+  scene.bodies[1].velocity = {kVx, 0.0};
+  const double landing = std::sqrt(2.0 / kG), after = kVx - kMu * kG * landing;
+  const double stop = landing + after / (kMu * kG);
+  std::vector<double> times;
+  for (int k = 0; k <= 30; ++k) times.push_back(0.05 * k);
+  for (OracleMethod method : kMethods) {
+    const OracleResult r = run_oracle(scene, times, with(method));
+    REQUIRE_FALSE(r.events.empty());
+    double impulse = 0.0;
+    for (const auto& e : r.events) {
+      check_near(e.time, landing);
+      impulse += e.impulse;
+    }
+    check_near(impulse, kG * landing);  // m v_y, the box of 1 kg
+    for (std::size_t k = 0; k < r.times.size(); ++k) {
+      const double t = r.times[k];
+      INFO("t = " << t);
+      const double tau = std::min(std::max(t - landing, 0.0), stop - landing);
+      const gp::BodyState& s = r.states[k][1];
+      check_near(s.position.x(),
+                 t < landing ? kVx * t : kVx * landing + after * tau - 0.5 * kMu * kG * tau * tau);
+      check_near(s.velocity.x(), t < landing ? kVx : after - kMu * kG * tau);
+      check_near(s.position.y(), t < landing ? 1.5 - 0.5 * kG * t * t : 0.5);
+      check_near(s.angular_velocity, 0.0);
+    }
+    CHECK(r.largest_drift <= kDrift);
+  }
+}
+
 TEST_CASE("oracle: a stack of three boxes stays at rest", "[oracle][contact]") {
   const gp::Scene scene = shipped("stack3");
   for (OracleMethod method : kMethods) {
@@ -210,4 +246,96 @@ TEST_CASE("oracle: CVODE and ARKODE agree to 1e-9 on every contact scene", "[ora
     }
     CHECK(largest <= 1e-9);
   }
+}
+
+namespace {
+
+// Equal discs (r = 0.5 m) in a hexagonal lattice filling a box of three static segments 5 m
+// wide: rows of five touching each other and both walls, alternating with rows of four nested
+// in them, every disc touching its neighbours. The contact forces are not unique (a row of five
+// between two walls can carry any horizontal thrust); the motion is: nothing moves.
+gp::Scene jammed_lattice(int rows, double friction) {
+  gp::Scene scene{};
+  scene.settings.gravity = {0.0, -kG};
+  gp::BodyDef box;
+  box.name = "box";
+  box.type = gp::BodyType::Static;
+  for (const auto& [a, b] :
+       {std::pair{Vec2(-2.5, 0.0), Vec2(2.5, 0.0)}, std::pair{Vec2(-2.5, 0.0), Vec2(-2.5, 10.0)},
+        std::pair{Vec2(2.5, 0.0), Vec2(2.5, 10.0)}}) {
+    box.shapes.push_back({gp::Shape::segment(a, b), 0.0, friction});
+  }
+  scene.bodies.push_back(box);
+  for (int row = 0; row < rows; ++row) {
+    const int count = row % 2 == 0 ? 5 : 4;
+    for (int k = 0; k < count; ++k) {
+      gp::BodyDef disc;
+      disc.name = "disc" + std::to_string(row) + "_" + std::to_string(k);
+      disc.position = {k - (count - 1) / 2.0, 0.5 + row * std::sqrt(3.0) / 2.0};
+      disc.shapes.push_back({gp::Shape::circle(0.5), 0.0, friction});
+      scene.bodies.push_back(disc);
+    }
+  }
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("oracle: a jammed hexagonal lattice of equal discs stays at rest", "[oracle][contact]") {
+  const double friction = GENERATE(0.0, 0.5);
+  INFO("mu = " << friction);
+  const gp::Scene scene = jammed_lattice(4, friction);
+  const OracleResult r = run_oracle(scene, std::vector<double>{0.5, 1.0});
+  for (const auto& states : r.states) {
+    for (std::size_t b = 1; b < scene.bodies.size(); ++b) {
+      INFO(scene.bodies[b].name);
+      check_near(states[b].position.x(), scene.bodies[b].position.x());
+      check_near(states[b].position.y(), scene.bodies[b].position.y());
+      check_near(states[b].velocity.norm(), 0.0);
+      check_near(states[b].angular_velocity, 0.0);
+    }
+  }
+  CHECK(r.events.empty());
+  CHECK(r.largest_drift <= kDrift);
+}
+
+TEST_CASE("oracle: a disc dropped into a pocket of a jammed lattice stops dead, the lattice holds",
+          "[oracle][contact]") {
+  // The lattice's top row (four discs) leaves a pocket at x = 0, √3/2 m above it; a disc dropped
+  // 0.5 m into it (C_R = 0) strikes two discs at once, symmetrically, and the rigid lattice
+  // takes the whole impulse m v through its redundant contacts to the box: it stops dead.
+  const double friction = GENERATE(0.0, 0.5);
+  INFO("mu = " << friction);
+  gp::Scene scene = jammed_lattice(4, friction);
+  const double rest = 0.5 + 4.0 * std::sqrt(3.0) / 2.0, drop = 0.5;
+  gp::BodyDef disc;
+  disc.name = "dropped";
+  disc.mass = 1.0;
+  disc.position = {0.0, rest + drop};
+  disc.shapes.push_back({gp::Shape::circle(0.5), 0.0, friction});
+  scene.bodies.push_back(disc);
+  const double landing = std::sqrt(2.0 * drop / kG);
+  const OracleResult r = run_oracle(scene, std::vector<double>{0.5 * landing, 1.0});
+  REQUIRE_FALSE(r.events.empty());
+  double impulse = 0.0;
+  for (const auto& e : r.events) {
+    check_near(e.time, landing);
+    if (e.body_a == scene.bodies.size() - 1 || e.body_b == scene.bodies.size() - 1) {
+      impulse += std::abs(e.normal.y()) * e.impulse;
+    }
+  }
+  check_near(impulse, kG * landing);  // m v, the disc of 1 kg
+  const gp::BodyState& falling = r.states[0].back();
+  check_near(falling.position.y(), rest + drop - 0.5 * kG * 0.25 * landing * landing);
+  const gp::BodyState& stopped = r.states[1].back();
+  check_near(stopped.position.x(), 0.0);
+  check_near(stopped.position.y(), rest);
+  check_near(stopped.velocity.norm(), 0.0);
+  for (std::size_t b = 1; b + 1 < scene.bodies.size(); ++b) {
+    INFO(scene.bodies[b].name);
+    check_near(r.states[1][b].position.x(), scene.bodies[b].position.x());
+    check_near(r.states[1][b].position.y(), scene.bodies[b].position.y());
+    check_near(r.states[1][b].velocity.norm(), 0.0);
+  }
+  CHECK(r.largest_drift <= kDrift);
 }

@@ -40,7 +40,7 @@ struct CornerRoots {
 CornerRoots corner_roots(const oracle::World& world, const oracle::ActiveContact& contact,
                          const std::vector<oracle::Motion>& armed,
                          const std::vector<oracle::Motion>& motions) {
-  oracle::EventWatch watch(world, 1e-9);
+  oracle::EventWatch watch(world, 1e-9, 1e-9);
   const std::vector<oracle::ActiveContact> contacts{contact};
   watch.arm(contacts, armed);
   oracle::HybridSystem system(world);
@@ -84,7 +84,7 @@ TEST_CASE("Oracle events: a corner-on-corner contact watches both corners' norma
   REQUIRE(geometry.points.size() == 1);
   const oracle::Feature feature = geometry.points[0].feature;
   REQUIRE(feature.kind == oracle::Feature::Kind::VertexVertex);
-  const oracle::EventWatch pairs(world, 1e-9);
+  const oracle::EventWatch pairs(world, 1e-9, 1e-9);
   REQUIRE(pairs.pairs().size() == 1);
   const oracle::ActiveContact contact =
       oracle::make_active_contact(world, pairs.pairs()[0], 0, feature);

@@ -89,7 +89,7 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
   validate(options, output_times);
   const oracle::World world = oracle::build_world(scene);
   oracle::HybridSystem system(world);
-  oracle::EventWatch watch(world, options.contact_tolerance);
+  oracle::EventWatch watch(world, options.contact_tolerance, options.speed_tolerance);
   oracle::ContactEvents contacts(system, watch, options);
   oracle::ZenoGuard zeno(options);
   OracleResult result;

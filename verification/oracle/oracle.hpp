@@ -83,7 +83,7 @@ struct OracleResult {
 /// each ≥ 0, in s) and returns the state of every body at each of them: centre of mass,
 /// orientation in [0, 2π), velocities. Static bodies stay put, kinematic bodies move at their
 /// constant velocities. Touching shapes at the start are in contact. Throws OracleDomainError
-/// when the scene leaves the oracle's domain (an impact with friction while sliding, a contact
+/// when the scene leaves the oracle's domain (an impact that gains energy, a contact
 /// problem with no solution, a Zeno sequence, a solver failure, an overlap it missed),
 /// std::invalid_argument for bad options or output times, and InputError for bodies the SRS
 /// constraints refuse.

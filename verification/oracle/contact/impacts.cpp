@@ -3,21 +3,23 @@
 #include <stdexcept>
 
 #include "gamephysics/models/im/collision_response.hpp"
-#include "verification/oracle/contact/body_coupling.hpp"
+#include "verification/oracle/contact/friction_lcp.hpp"
 #include "verification/oracle/contact/lemke.hpp"
 
 namespace gp::oracle {
 
 namespace {
 
+constexpr double kRegularisation = 1e-14;
+
 double restitution_of(const ActiveContact& c, const ContactKinematics& k, double rest_speed) {
   return k.gap_rate < -rest_speed ? c.restitution : 0.0;
 }
 
-// IM:col2D, the SRS's own model, for a contact that is alone.
-double resolve_one(const World& world, const ActiveContact& c, const ContactKinematics& k,
-                   double restitution, std::span<Vec2> velocity,
-                   std::span<double> angular_velocity) {
+// IM:col2D, the SRS's own model, for a frictionless contact that is alone.
+Impulse resolve_one(const World& world, const ActiveContact& c, const ContactKinematics& k,
+                    double restitution, std::span<Vec2> velocity,
+                    std::span<double> angular_velocity) {
   const RigidBody& first = world.bodies[c.first];
   const RigidBody& second = world.bodies[c.second];
   const im::CollisionResponse r =
@@ -30,37 +32,50 @@ double resolve_one(const World& world, const ActiveContact& c, const ContactKine
   angular_velocity[c.first] = r.angular_velocity_a;
   velocity[c.second] = r.velocity_b;
   angular_velocity[c.second] = r.angular_velocity_b;
-  return r.impulse;
+  return {r.impulse, 0.0};
 }
 
 }  // namespace
 
-std::vector<double> resolve_impacts(const World& world, std::span<const ActiveContact> contacts,
-                                    std::span<const ContactKinematics> kinematics,
-                                    double rest_speed, std::span<Vec2> velocity,
-                                    std::span<double> angular_velocity) {
-  const auto n = static_cast<Eigen::Index>(contacts.size());
-  if (n == 1) {
+std::vector<Impulse> resolve_impacts(const World& world, std::span<const ActiveContact> contacts,
+                                     std::span<const ContactKinematics> kinematics,
+                                     double rest_speed, std::span<Vec2> velocity,
+                                     std::span<double> angular_velocity) {
+  const std::size_t n = contacts.size();
+  if (n == 1 && contacts[0].friction == 0.0) {
     return {resolve_one(world, contacts[0], kinematics[0],
                         restitution_of(contacts[0], kinematics[0], rest_speed), velocity,
                         angular_velocity)};
   }
-  std::vector<BodyPairVector> normal;
-  for (Eigen::Index i = 0; i < n; ++i)
-    normal.push_back(along(contacts[i], kinematics[i].normal_row));
-  Eigen::MatrixXd G(n, n);
-  Eigen::VectorXd q(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double arrival = dot(normal[i], velocity, angular_velocity);
-    q[i] = (1.0 + restitution_of(contacts[i], kinematics[i], rest_speed)) * arrival;
-    for (Eigen::Index k = 0; k < n; ++k) G(i, k) = coupling(world, normal[i], normal[k]);
+  std::vector<FrictionRow> rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ActiveContact& c = contacts[i];
+    const BodyPairVector normal = along(c, kinematics[i].normal_row);
+    const BodyPairVector tangent = along(c, kinematics[i].tangent_row);
+    const double arrival = dot(normal, velocity, angular_velocity);
+    rows.push_back({normal, normal, tangent,
+                    (1.0 + restitution_of(c, kinematics[i], rest_speed)) * arrival,
+                    dot(tangent, velocity, angular_velocity), c.friction, c.friction > 0.0});
   }
-  const auto p = solve_lcp(G, q);
-  if (!p) throw std::runtime_error("oracle: no impulses satisfy Newton's law at the contacts");
-  for (Eigen::Index i = 0; i < n; ++i) {
-    add_response(world, normal[i], (*p)[i], velocity, angular_velocity);
+  FrictionLcp lcp = friction_lcp(world, rows);
+  auto z = solve_lcp(lcp.M, lcp.q);
+  if (!z) {
+    // The problem has a solution (its matrix is copositive, and q is of Anitescu and Potra's
+    // form), but degenerate ones (a pile: dozens of contacts, most at rest) can end Lemke's method
+    // on a ray by round-off. M + εI is strictly copositive, which it always solves; ε = 1e-14 of
+    // the largest diagonal entry moves the impulses by about that share of themselves.
+    lcp.M.diagonal().array() += kRegularisation * lcp.M.diagonal().cwiseAbs().maxCoeff();
+    z = solve_lcp(lcp.M, lcp.q);
   }
-  return {p->begin(), p->end()};
+  if (!z) throw std::runtime_error("no impulses satisfy Newton's and Coulomb's laws");
+  for (Eigen::Index k = 0; k < z->size(); ++k) {
+    add_response(world, lcp.push[static_cast<std::size_t>(k)], (*z)[k], velocity, angular_velocity);
+  }
+  std::vector<Impulse> impulses;
+  for (const FrictionSlots& s : lcp.slots) {
+    impulses.push_back({(*z)[s.normal], s.plus < 0 ? 0.0 : (*z)[s.plus] - (*z)[s.plus + 1]});
+  }
+  return impulses;
 }
 
 }  // namespace gp::oracle

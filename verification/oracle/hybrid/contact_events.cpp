@@ -1,8 +1,11 @@
 #include "verification/oracle/hybrid/contact_events.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
+#include "gamephysics/models/dd/kinetic_energy.hpp"
 #include "verification/oracle/contact/contact_modes.hpp"
 #include "verification/oracle/contact/impacts.hpp"
 #include "verification/oracle/contact/projection.hpp"
@@ -21,9 +24,24 @@ Pose pose_of(const Motion& m) {
   return {m.position, m.angle};
 }
 
+// The share of the kinetic energy an impact may gain by round-off of its impulses.
+constexpr double kEnergyRoundOff = 1e-10;
+
+// J: DD:kEnergy summed over the bodies that move under forces (the others' velocities are fixed).
+double kinetic_energy(const World& world, std::span<const Vec2> velocity,
+                      std::span<const double> angular_velocity) {
+  double e = 0.0;
+  for (std::size_t b = 0; b < world.bodies.size(); ++b) {
+    const RigidBody& body = world.bodies[b];
+    if (body.type != BodyType::Dynamic) continue;
+    e += dd::kinetic_energy(body.mass, velocity[b], body.moment, angular_velocity[b]);
+  }
+  return e;
+}
+
 }  // namespace
 
-ContactEvents::ContactEvents(HybridSystem& system, const EventWatch& watch,
+ContactEvents::ContactEvents(HybridSystem& system, EventWatch& watch,
                              const verification::OracleOptions& options)
     : system_(system), watch_(watch), options_(options) {}
 
@@ -129,37 +147,45 @@ void ContactEvents::settle(double t, std::vector<Motion>& motions,
     return ki.gap_rate < -options_.speed_tolerance;
   });
   if (approaching) {
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (k[i].gap_rate < -options_.rest_speed && candidates[i].friction > 0.0 &&
-          std::abs(k[i].slip) > options_.speed_tolerance) {
-        const HullPair& pair = watch_.pairs()[candidates[i].pair];
-        throw OracleDomainError(describe(pair.body_a, pair.body_b) +
-                                    " collide with friction while sliding (slip " +
-                                    message_number(k[i].slip) +
-                                    " m/s); the oracle's impacts are frictionless (IM:col2D)",
-                                t);
-      }
-    }
     std::vector<Vec2> velocity;
     std::vector<double> angular_velocity;
     for (const Motion& m : motions) {
       velocity.push_back(m.velocity);
       angular_velocity.push_back(m.angular_velocity);
     }
-    const std::vector<double> p =
-        resolve_impacts(w, candidates, k, options_.rest_speed, velocity, angular_velocity);
+    const double before = kinetic_energy(w, velocity, angular_velocity);
+    std::vector<Impulse> p;
+    try {
+      p = resolve_impacts(w, candidates, k, options_.rest_speed, velocity, angular_velocity);
+    } catch (const std::runtime_error& e) {
+      throw OracleDomainError(
+          std::string("the impact has no solution Lemke's method reaches: ") + e.what(), t);
+    }
+    const double after = kinetic_energy(w, velocity, angular_velocity);
+    // A kinematic body is an unbounded source of energy (a paddle bats a ball): no check there.
+    const bool closed = std::none_of(candidates.begin(), candidates.end(), [&](const auto& c) {
+      return w.bodies[c.first].type == BodyType::Kinematic ||
+             w.bodies[c.second].type == BodyType::Kinematic;
+    });
+    if (closed && after > before * (1.0 + kEnergyRoundOff)) {
+      throw OracleDomainError("an impact gains energy (" + message_number(before) + " J to " +
+                                  message_number(after) +
+                                  " J): Newton's law of restitution with friction can, and then "
+                                  "is no model of it",
+                              t);
+    }
     for (std::size_t b = 0; b < motions.size(); ++b) {
       motions[b].velocity = velocity[b];
       motions[b].angular_velocity = angular_velocity[b];
     }
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (p[i] <= 0.0) continue;
+      if (p[i].normal <= 0.0) continue;
       // Reported as the pair's bodies A and B, with the normal from B towards A.
       const HullPair& pair = watch_.pairs()[candidates[i].pair];
       const double sign = candidates[i].first == pair.body_a ? 1.0 : -1.0;
       // + 0 turns a −0 component into 0 for the impact log.
       const Vec2 normal = sign * k[i].normal + Vec2::Zero();
-      impacts.push_back({t, pair.body_a, pair.body_b, normal, k[i].point, p[i]});
+      impacts.push_back({t, pair.body_a, pair.body_b, normal, k[i].point, p[i].normal});
     }
     k = kinematics_of(candidates, motions);
   }
@@ -182,6 +208,17 @@ void ContactEvents::settle(double t, std::vector<Motion>& motions,
         "the contact forces have no solution (a frictional paradox of Painlevé's kind)", t);
   }
   largest_drift_ = std::max(largest_drift_, project_onto_contacts(w, touching, motions));
+  std::vector<bool> held(watch_.pairs().size(), false);
+  for (const ActiveContact& c : touching) held[c.pair] = true;
+  const std::array<const std::vector<ActiveContact>*, 2> groups = {&candidates,
+                                                                   &system_.contacts()};
+  for (const std::vector<ActiveContact>* group : groups) {
+    const std::vector<ContactKinematics> parting = kinematics_of(*group, motions);
+    for (std::size_t i = 0; i < group->size(); ++i) {
+      const std::size_t p = (*group)[i].pair;
+      if (!held[p] && parting[i].gap_rate <= options_.rest_speed) watch_.release(p);
+    }
+  }
   system_.set_contacts(std::move(touching));
   system_.states().values_of(motions, y);
 }

@@ -16,7 +16,7 @@ namespace gp::oracle {
 class ContactEvents {
  public:
   /// All must outlive this.
-  ContactEvents(HybridSystem& system, const EventWatch& watch,
+  ContactEvents(HybridSystem& system, EventWatch& watch,
                 const verification::OracleOptions& options);
 
   /// At the start (time t, state y): every pair closer than the contact tolerance touches; an
@@ -46,12 +46,13 @@ class ContactEvents {
   void detect(std::size_t p, std::span<const Motion> motions,
               std::vector<ActiveContact>& contacts) const;
   /// Impacts, separation, modes and projection for `candidates` at time t; the result becomes
-  /// the system's contacts and y the projected state.
+  /// the system's contacts and y the projected state. Pairs of `candidates` or of the contacts
+  /// before that part slower than the rest speed are released (EventWatch::release).
   void settle(double t, std::vector<Motion>& motions, std::vector<ActiveContact> candidates,
               double* y, std::vector<verification::OracleEvent>& impacts);
 
   HybridSystem& system_;
-  const EventWatch& watch_;
+  EventWatch& watch_;
   verification::OracleOptions options_;
   double largest_drift_ = 0.0;
 };

@@ -20,6 +20,12 @@ constexpr double kMarginShare = 0.1;
 // (1e-8 s at the rest speed of 1e-4 m/s, below which arrivals do not bounce anyway).
 constexpr double kApproachDepth = 1e-12;
 
+// m: the same for a pair released at rest (EventWatch::release), until it is this far apart. Its
+// distance grows as t² or t³ from zero and is found negative on the solver's error (1e-12 m)
+// again and again, each time an event that changes nothing; a real return of such a pair is
+// found at most this deep, a tenth of the contact tolerance (1e-9 m).
+constexpr double kReleaseDepth = 1e-10;
+
 // The share of the bodies' weight (their mass times g, or times 1 m/s² without gravity) below
 // which a contact's force counts as zero: a contact that holds with no force (two bodies falling
 // together) or friction exactly at its bound would otherwise chatter on round-off. A lift-off is
@@ -79,8 +85,8 @@ bool faces_edge(const World& world, const ActiveContact& c, int v,
 
 }  // namespace
 
-EventWatch::EventWatch(const World& world, double end_tolerance)
-    : world_(world), end_tolerance_(end_tolerance) {
+EventWatch::EventWatch(const World& world, double end_tolerance, double slip_floor)
+    : world_(world), end_tolerance_(end_tolerance), slip_floor_(slip_floor) {
   for (std::size_t a = 0; a < world.bodies.size(); ++a) {
     for (std::size_t b = a + 1; b < world.bodies.size(); ++b) {
       if (world.bodies[a].type != BodyType::Dynamic && world.bodies[b].type != BodyType::Dynamic) {
@@ -100,6 +106,7 @@ EventWatch::EventWatch(const World& world, double end_tolerance)
     }
   }
   in_contact_.assign(pairs_.size(), false);
+  released_.assign(pairs_.size(), false);
   double mass = 0.0;
   for (const RigidBody& b : world.bodies) mass += b.type == BodyType::Dynamic ? b.mass : 0.0;
   force_floor_ = kForceShare * mass * std::max(world.gravity.norm(), 1.0);
@@ -110,6 +117,9 @@ void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Mo
   std::fill(in_contact_.begin(), in_contact_.end(), false);
   for (const ActiveContact& c : contacts) in_contact_[c.pair] = true;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    if (released_[p] && (in_contact_[p] || distance(p, motions) > kReleaseDepth)) {
+      released_[p] = false;
+    }
     if (!in_contact_[p]) roots_.push_back({RootKind::Approach, p, 0});
   }
   for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -151,6 +161,10 @@ void EventWatch::arm(std::span<const ActiveContact> contacts, std::span<const Mo
   }
 }
 
+void EventWatch::release(std::size_t p) {
+  released_[p] = true;
+}
+
 double EventWatch::distance(std::size_t p, std::span<const Motion> motions) const {
   const HullPair& pair = pairs_[p];
   return signed_distance(
@@ -163,7 +177,8 @@ void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> cont
   for (std::size_t r = 0; r < roots_.size(); ++r) {
     const Root& root = roots_[r];
     if (root.kind == RootKind::Approach) {
-      g[r] = distance(root.index, s.motions) + kApproachDepth;
+      g[r] = distance(root.index, s.motions) +
+             (released_[root.index] ? kReleaseDepth : kApproachDepth);
       continue;
     }
     const ActiveContact& c = contacts[root.index];
@@ -177,7 +192,8 @@ void EventWatch::evaluate(const Snapshot& s, std::span<const ActiveContact> cont
         g[r] = c.friction * f.normal - (root.detail == 0 ? f.tangent : -f.tangent) + force_floor_;
         break;
       case RootKind::SlipStop:
-        g[r] = c.slip_sign * k.slip;
+        // Half the floor: a slip stopped there is below it, so the modes are chosen afresh.
+        g[r] = c.slip_sign * k.slip + 0.5 * slip_floor_;
         break;
       case RootKind::OffEdge:
         g[r] = (root.detail % 2 == 0 ? k.along_edge : k.edge_length - k.along_edge) +
