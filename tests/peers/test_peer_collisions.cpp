@@ -64,3 +64,26 @@ TEST_CASE("Peers combine friction as the geometric mean, as our engine does",
     CHECK_THAT(world->state(1).velocity.x(), WithinAbs(2.0 - 0.3 * 9.81 * 0.5, 0.05));
   }
 }
+
+TEST_CASE("Box2D keeps a plank exactly two skins thick whole: it rests grown by the skin",
+          "[NFR:Correctness][peers]") {
+  // A 1 m × 2 cm plank: moved in by Box2D's skin (1 cm) on each side it would have no thickness,
+  // which b2PolygonShape::Set cannot take; it keeps its own vertices, so its bottom sits
+  // 2 cm below its centre, less Box2D's 5 mm resting overlap (b2_linearSlop): centre at 1.5 cm.
+  gp::Scene scene = empty_scene(1.0 / 60.0);
+  scene.settings.gravity = {0.0, -10.0};
+  gp::BodyDef ground;
+  ground.name = "ground";
+  ground.type = gp::BodyType::Static;
+  ground.position = {0.0, -1.0};
+  ground.shapes.push_back({gp::Shape::box(10.0, 2.0)});
+  gp::BodyDef plank;
+  plank.name = "plank";
+  plank.position = {0.0, 0.05};
+  plank.shapes.push_back({gp::Shape::box(1.0, 0.02)});
+  scene.bodies = {ground, plank};
+  auto world = gp::peers::make_peer(PeerEngine::Box2d, gp::peers::peer_scene(scene));
+  for (int n = 0; n < 120; ++n) world->step(scene.dt);
+  CHECK_THAT(world->state(1).position.y(), WithinAbs(0.015, 1e-3));
+  CHECK_THAT(world->state(1).velocity.y(), WithinAbs(0.0, 1e-3));
+}
