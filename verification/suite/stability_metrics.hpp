@@ -24,7 +24,7 @@ double largest_overlap(const std::vector<peers::PeerBody>& bodies,
 double largest_speed(const std::vector<peers::PeerBody>& bodies,
                      const std::vector<BodyState>& states);
 
-/// J: the kinetic energy of the dynamic bodies, Σ ½ m |v|² + ½ I ω² (DD:KEnergy, with the
+/// J: the kinetic energy of the dynamic bodies, Σ ½ m |v|² + ½ I ω² (DD:kEnergy, with the
 /// rotation term; m in kg, I in kg·m²).
 double kinetic_energy(const std::vector<peers::PeerBody>& bodies,
                       const std::vector<BodyState>& states);
