@@ -7,6 +7,7 @@
 using Catch::Matchers::WithinAbs;
 using gp::peers::PeerEngine;
 using gp::peers::testing::ball;
+using gp::peers::testing::box_body;
 using gp::peers::testing::empty_scene;
 using gp::peers::testing::floor_box;
 
@@ -48,11 +49,8 @@ TEST_CASE("Peers combine friction as the geometric mean, as our engine does",
   // so friction slows it by μ g = 2.943 m/s² (Chipmunk's product 0.09 would give 0.883 m/s²).
   gp::Scene scene = empty_scene(1.0 / 60.0);
   scene.settings.gravity = {0.0, -9.81};
-  gp::BodyDef box;
-  box.name = "box";
-  box.position = {0.0, 0.5};
+  gp::BodyDef box = box_body("box", 1.0, 1.0, {0.0, 0.5}, 0.9);
   box.velocity = {2.0, 0.0};
-  box.shapes.push_back({gp::Shape::box(1.0, 1.0), 0.0, 0.9});
   scene.bodies = {floor_box(100.0, 0.1), box};
   for (PeerEngine engine : {PeerEngine::Chipmunk, PeerEngine::Box2d}) {
     auto world = gp::peers::make_peer(engine, gp::peers::peer_scene(scene));
@@ -69,11 +67,7 @@ TEST_CASE("Box2D keeps a plank exactly two skins thick whole: it rests grown by 
   // 2 cm below its centre, less Box2D's 5 mm resting overlap (b2_linearSlop): centre at 1.5 cm.
   gp::Scene scene = empty_scene(1.0 / 60.0);
   scene.settings.gravity = {0.0, -10.0};
-  gp::BodyDef plank;
-  plank.name = "plank";
-  plank.position = {0.0, 0.05};
-  plank.shapes.push_back({gp::Shape::box(1.0, 0.02)});
-  scene.bodies = {floor_box(10.0, 0.0), plank};
+  scene.bodies = {floor_box(10.0, 0.0), box_body("plank", 1.0, 0.02, {0.0, 0.05}, 0.0)};
   auto world = gp::peers::make_peer(PeerEngine::Box2d, gp::peers::peer_scene(scene));
   for (int n = 0; n < 120; ++n) world->step(scene.dt);
   CHECK_THAT(world->state(1).position.y(), WithinAbs(0.015, 1e-3));
