@@ -26,4 +26,23 @@ inline BodyDef ball(const std::string& name, const Vec2& position, const Vec2& v
   return def;
 }
 
+/// A dynamic box `width` × `height` [m] of density 1 kg/m² at `position` [m], friction μ [1].
+inline BodyDef box_body(const std::string& name, double width, double height, const Vec2& position,
+                        double friction) {
+  BodyDef def;
+  def.name = name;
+  def.position = position;
+  def.shapes.push_back({Shape::box(width, height), 0.0, friction});
+  return def;
+}
+
+/// A static floor `width` [m] wide and 1 m thick whose top is y = 0, with friction μ [1].
+inline BodyDef floor_box(double width, double friction) {
+  BodyDef def;
+  def.name = "floor";
+  def.type = BodyType::Static;
+  def.shapes.push_back({Shape::box(width, 1.0, {0.0, -0.5}), 0.0, friction});
+  return def;
+}
+
 }  // namespace gp::peers::testing

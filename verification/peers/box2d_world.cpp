@@ -29,7 +29,8 @@ b2BodyType b2_type(BodyType type) {
 }
 
 /// `p` with every edge moved inwards by `skin` [m], so that Box2D's rounding by the skin gives
-/// back p's outline; none when p is too thin for that (an edge would turn round).
+/// back p's outline; none when p is too thin for that (an edge would turn round, or shrink to
+/// under b2_linearSlop, where b2PolygonShape::Set welds its ends and fails on a 2-skin card).
 std::optional<std::array<b2Vec2, kMaxPolygonVertices>> inset(const ConvexPolygon& p, double skin) {
   std::array<Vec2, kMaxPolygonVertices> moved{};
   for (int i = 0; i < p.count; ++i) {
@@ -47,7 +48,9 @@ std::optional<std::array<b2Vec2, kMaxPolygonVertices>> inset(const ConvexPolygon
   for (int i = 0; i < p.count; ++i) {
     const int next = (i + 1) % p.count;
     const Vec2 edge = moved[next] - moved[i];
-    if (edge.dot(p.vertices[next] - p.vertices[i]) <= 0.0) return std::nullopt;
+    if (edge.dot(p.vertices[next] - p.vertices[i]) <= 0.0 || edge.norm() < b2_linearSlop) {
+      return std::nullopt;
+    }
     vertices[i] = b2(moved[i]);
   }
   return vertices;

@@ -22,6 +22,7 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
   add(long_run_checks(o));
   add(peer_checks(scenes, o, data));
   add(pile_checks(scenes, o, data));
+  add(stability_checks(o));
   if (!o.quick) add(work_precision_checks(scenes, o, data));
   add(criteria_level_checks(checks, o));
   const SpeedSection speed = speed_against_peers(o);

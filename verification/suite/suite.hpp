@@ -45,6 +45,7 @@ std::vector<Check> conservation_checks(const std::vector<NamedScene>& scenes,
                                        const SuiteOptions& o);
 std::vector<Check> hard_case_checks(const SuiteOptions& o);
 std::vector<Check> long_run_checks(const SuiteOptions& o);
+std::vector<Check> stability_checks(const SuiteOptions& o);
 std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
                                CsvFiles& data);
 std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
