@@ -14,3 +14,23 @@ add_test(NAME cli.view_sigterm_removes_the_partial_file
                  ${CMAKE_SOURCE_DIR}/scenes/rain1000.json --duration 1000)
 
 target_link_libraries(gamephysics_tests PRIVATE gamephysics_ensemble)
+
+# An ensemble of the bouncing ball for 2 s with the oracle: every sample's first impact at the
+# closed form of its perturbed height, the engine within 1e-6 m of the oracle, the summary's
+# mean and standard deviation those of the uniform draw (tests/ensemble/check_bouncing_ball.py).
+add_test(NAME cli.ensemble_bouncing_ball_matches_the_closed_form
+         COMMAND sh -c "rm -rf ens_ball && \"$0\" ensemble \"$1\"/scenes/bouncing_ball.json --duration 2 --samples 256 --oracle --out ens_ball --no-plots && python3 \"$1\"/tests/ensemble/check_bouncing_ball.py ens_ball 256"
+                 ${GP_BIN} ${CMAKE_SOURCE_DIR})
+# The same files to the byte on 1 and 2 threads (oblique collision, 100 samples, random sampler).
+add_test(NAME cli.ensemble_same_bytes_on_1_and_2_threads
+         COMMAND sh -c "rm -rf ens_t1 ens_t2 && for t in 1 2; do \"$0\" ensemble \"$1\"/scenes/oblique.json --samples 100 --sampler random --seed 5 --threads $t --out ens_t$t --no-plots > /dev/null || exit 1; done && for f in samples.csv energy.csv summary.json; do cmp ens_t1/$f ens_t2/$f || exit 1; done"
+                 ${GP_BIN} ${CMAKE_SOURCE_DIR})
+# Bad input: an uncertainty file with a spread out of range (exit 2, the message naming the file,
+# the field, the rule and the value; no folder made), an unknown sampler.
+add_test(NAME cli.ensemble_bad_uncertainty_exits_2_and_writes_nothing
+         COMMAND sh -c "rm -rf ens_bad && printf '{\"mass\": 0.1, \"velocity\": 2}' > ens_bad_spreads.json && \"$0\" ensemble \"$1\"/scenes/bouncing_ball.json --samples 10 --uncertainty ens_bad_spreads.json --out ens_bad 2> ens_bad.txt; test $? -eq 2 && test \"$(cat ens_bad.txt)\" = \"error: ens_bad_spreads.json: velocity: must be a relative spread u with 0 <= u < 1, got 2\" && test ! -e ens_bad && \"$0\" ensemble \"$1\"/scenes/bouncing_ball.json --samples 10 --sampler halton --out ens_bad 2> ens_bad.txt; test $? -eq 2 && grep -qF 'sampler: must be sobol or random, got halton' ens_bad.txt && test ! -e ens_bad"
+                 ${GP_BIN} ${CMAKE_SOURCE_DIR})
+# A sample whose run fails (a non-finite state) is recorded with its error; the ensemble goes on.
+add_test(NAME cli.ensemble_records_failed_samples
+         COMMAND sh -c "rm -rf ens_fail && printf '{\"dt\": 0.01, \"duration\": 1, \"bodies\": [{\"name\": \"rocket\", \"position\": [0, 0], \"mass\": 1e-300, \"force\": [1e308, 0]}]}' > ens_fail.json && \"$0\" ensemble ens_fail.json --samples 40 --out ens_fail --no-plots && test $(grep -c \"has a non-finite state\" ens_fail/samples.csv) -eq 40 && grep -q '\"failed\": 40' ens_fail/summary.json"
+                 ${GP_BIN})
