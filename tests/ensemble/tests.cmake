@@ -34,3 +34,12 @@ add_test(NAME cli.ensemble_bad_uncertainty_exits_2_and_writes_nothing
 add_test(NAME cli.ensemble_records_failed_samples
          COMMAND sh -c "rm -rf ens_fail && printf '{\"dt\": 0.01, \"duration\": 1, \"bodies\": [{\"name\": \"rocket\", \"position\": [0, 0], \"mass\": 1e-300, \"force\": [1e308, 0]}]}' > ens_fail.json && \"$0\" ensemble ens_fail.json --samples 40 --out ens_fail --no-plots && test $(grep -c \"has a non-finite state\" ens_fail/samples.csv) -eq 40 && grep -q '\"failed\": 40' ens_fail/summary.json"
                  ${GP_BIN})
+# An ensemble killed midway resumes from its completed chunks to the bytes of a whole run.
+add_test(NAME cli.ensemble_killed_resumes_to_the_same_bytes
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/ensemble/kill_and_resume.sh ${GP_BIN}
+                 ${CMAKE_SOURCE_DIR}/scenes/bouncing_ball.json --samples 640 --oracle --threads 1
+                 --no-plots)
+# scenes/ensembles/rain100.json is what scenes/generate.py writes.
+add_test(NAME scenes.generated_rain100_is_committed
+         COMMAND sh -c "rm -rf generated_rain100 && python3 \"$0\"/scenes/generate.py generated_rain100 && diff generated_rain100/ensembles/rain100.json \"$0\"/scenes/ensembles/rain100.json"
+                 ${CMAKE_SOURCE_DIR})
