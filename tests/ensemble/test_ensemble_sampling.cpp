@@ -79,7 +79,7 @@ TEST_CASE("the perturbed inputs are the scene's non-zero inputs with their SRS s
   for (const auto& input : inputs) CHECK(input.relative == 0.1);
 }
 
-TEST_CASE("a point maps to values within x (1 ± u), C_R within [0, 1]",
+TEST_CASE("a point maps to values within x (1 ± u), C_R clamped to 0 to 1",
           "[ensemble][perturbation]") {
   const Scene scene = ball_scene();
   const Spreads spreads = srs_spreads();

@@ -1,6 +1,8 @@
 #include "verification/ensemble/process_group.hpp"
 
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 #ifdef GP_WITH_MPI
 #include <mpi.h>
@@ -13,28 +15,49 @@ namespace {
 #ifdef GP_WITH_MPI
 constexpr int kChunkTag = 1;
 
-// Rank 0's receipt of one chunk from any rank: its index, then its text.
-void receive_chunk(const std::function<void(std::uint64_t, const std::string&)>& store) {
+// Open MPI busy-waits in blocking calls; a rank that waits (rank 0 for the others' chunks, the
+// others at the end) would take a core from a rank that computes when the ranks outnumber the
+// cores. Waiting is done by polling with a millisecond's sleep instead.
+void nap() {
+  std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+void wait_for(MPI_Request& request) {
+  for (int done = 0;; nap()) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+  }
+}
+
+// Rank 0's receipt of one chunk from any rank, if one has arrived (or, with `wait`, once one
+// has): its index in 8 bytes, then its text.
+bool receive_chunk(const std::function<void(std::uint64_t, const std::string&)>& store, bool wait) {
   MPI_Status status;
-  MPI_Probe(MPI_ANY_SOURCE, kChunkTag, MPI_COMM_WORLD, &status);
+  for (int arrived = 0; !arrived; nap()) {
+    MPI_Iprobe(MPI_ANY_SOURCE, kChunkTag, MPI_COMM_WORLD, &arrived, &status);
+    if (!arrived && !wait) return false;
+  }
   int bytes = 0;
   MPI_Get_count(&status, MPI_CHAR, &bytes);
   std::string message(static_cast<std::size_t>(bytes), '\0');
   MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kChunkTag, MPI_COMM_WORLD,
            MPI_STATUS_IGNORE);
-  // The message is the chunk's index in 8 bytes, then its text.
   std::uint64_t chunk = 0;
-  for (int b = 0; b < 8; ++b)
+  for (int b = 0; b < 8; ++b) {
     chunk |= std::uint64_t(static_cast<unsigned char>(message[b])) << 8 * b;
+  }
   store(chunk, message.substr(8));
+  return true;
 }
 
 void send_chunk(std::uint64_t chunk, const std::string& text) {
   std::string message(8, '\0');
   for (int b = 0; b < 8; ++b) message[b] = static_cast<char>((chunk >> 8 * b) & 0xff);
   message += text;
-  MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kChunkTag,
-           MPI_COMM_WORLD);
+  MPI_Request request;
+  MPI_Isend(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kChunkTag,
+            MPI_COMM_WORLD, &request);
+  wait_for(request);
 }
 #endif
 
@@ -106,18 +129,14 @@ void ProcessGroup::run_chunks(
     store(chunks[k], text);
     ++received;
     // Store what the other ranks sent meanwhile, so that a stop loses as little as possible.
-    for (int waiting = 1; waiting;) {
-      MPI_Iprobe(MPI_ANY_SOURCE, kChunkTag, MPI_COMM_WORLD, &waiting, MPI_STATUS_IGNORE);
-      if (waiting) {
-        receive_chunk(store);
-        ++received;
-      }
-    }
+    while (receive_chunk(store, false)) ++received;
   }
   if (root()) {
-    for (; received < chunks.size(); ++received) receive_chunk(store);
+    for (; received < chunks.size(); ++received) receive_chunk(store, true);
   }
-  MPI_Barrier(MPI_COMM_WORLD);
+  MPI_Request done;
+  MPI_Ibarrier(MPI_COMM_WORLD, &done);
+  wait_for(done);
 #endif
 }
 
