@@ -10,9 +10,10 @@ rm -rf resume_whole resume_killed
 total=$(ls resume_whole/chunks | wc -l)
 "$bin" ensemble "$scene" "$@" --out resume_killed > /dev/null 2> resume_killed.txt &
 pid=$!
+# Stop it as soon as its first chunk is written (polled every 10 ms, with no process started).
 n=0
-while [ "$(ls resume_killed/chunks 2> /dev/null | grep -c '\.csv$')" -lt 3 ] && [ $n -lt 300 ]; do
-  sleep 0.05
+while [ ! -e resume_killed/chunks/chunk_000000.csv ] && [ $n -lt 3000 ]; do
+  sleep 0.01
   n=$((n + 1))
 done
 kill -s TERM $pid

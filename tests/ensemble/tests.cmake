@@ -37,8 +37,7 @@ add_test(NAME cli.ensemble_records_failed_samples
 # An ensemble killed midway resumes from its completed chunks to the bytes of a whole run.
 add_test(NAME cli.ensemble_killed_resumes_to_the_same_bytes
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/ensemble/kill_and_resume.sh ${GP_BIN}
-                 ${CMAKE_SOURCE_DIR}/scenes/bouncing_ball.json --samples 640 --oracle --threads 1
-                 --no-plots)
+                 ${CMAKE_SOURCE_DIR}/scenes/bouncing_ball.json --samples 512 --threads 1 --no-plots)
 # scenes/ensembles/rain100.json is what scenes/generate.py writes.
 add_test(NAME scenes.generated_rain100_is_committed
          COMMAND sh -c "rm -rf generated_rain100 && python3 \"$0\"/scenes/generate.py generated_rain100 && diff generated_rain100/ensembles/rain100.json \"$0\"/scenes/ensembles/rain100.json"
@@ -48,7 +47,7 @@ add_test(NAME scenes.generated_rain100_is_committed
 # openmpi_leaks.supp names its libraries, which the slow unwinder is needed to see in the stacks.
 if(GP_ENSEMBLE_MPIEXEC)
   add_test(NAME cli.ensemble_mpirun_matches_one_process
-           COMMAND sh -c "rm -rf ens_mpi1 ens_mpi2 && ASAN_OPTIONS=\"\${ASAN_OPTIONS:+\$ASAN_OPTIONS:}fast_unwind_on_malloc=0\" LSAN_OPTIONS=suppressions=\"$3\" \"$0\" -np 2 --oversubscribe \"$1\" ensemble \"$2\"/scenes/bouncing_ball.json --samples 96 --oracle --threads 1 --out ens_mpi2 --no-plots > ens_mpi2.txt && grep -qF 'on 2 processes' ens_mpi2.txt && \"$1\" ensemble \"$2\"/scenes/bouncing_ball.json --samples 96 --oracle --threads 1 --out ens_mpi1 --no-plots > /dev/null && for f in samples.csv energy.csv summary.json; do cmp ens_mpi1/$f ens_mpi2/$f || exit 1; done"
+           COMMAND sh -c "rm -rf ens_mpi1 ens_mpi2 && ASAN_OPTIONS=\"\${ASAN_OPTIONS:+\$ASAN_OPTIONS:}fast_unwind_on_malloc=0\" LSAN_OPTIONS=suppressions=\"$3\" \"$0\" -np 2 --oversubscribe \"$1\" ensemble \"$2\"/scenes/bouncing_ball.json --duration 2 --samples 96 --threads 1 --out ens_mpi2 --no-plots > ens_mpi2.txt && grep -qF 'on 2 processes' ens_mpi2.txt && \"$1\" ensemble \"$2\"/scenes/bouncing_ball.json --duration 2 --samples 96 --threads 1 --out ens_mpi1 --no-plots > /dev/null && for f in samples.csv energy.csv summary.json; do cmp ens_mpi1/$f ens_mpi2/$f || exit 1; done"
                    ${GP_ENSEMBLE_MPIEXEC} ${GP_BIN} ${CMAKE_SOURCE_DIR}
                    ${CMAKE_CURRENT_SOURCE_DIR}/ensemble/openmpi_leaks.supp)
   # Open MPI refuses to run as root unless told (containers, CI).

@@ -51,7 +51,8 @@ std::vector<double> unit_point(Sampler sampler, std::uint64_t seed, std::size_t 
   if (dimension > sobol_max_dimension()) {
     throw std::invalid_argument("the Sobol sequence has at most " +
                                 std::to_string(sobol_max_dimension()) + " dimensions, the scene " +
-                                std::to_string(dimension) + " perturbed inputs");
+                                std::to_string(dimension) +
+                                " perturbed inputs (--sampler random has no such limit)");
   }
   boost::random::sobol sequence(dimension);
   sequence.discard(index * dimension);
