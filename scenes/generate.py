@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the generated shipped scenes into this folder (or into the folder given as the only
 argument: a test compares that output with the committed files): the large ones, pyramid20.json
-and rain1000.json, and the contact scenes of the oracle (bodies resting, sliding, rolling,
-tipping, settling), whose placements on slopes are computed here.
+and rain1000.json, the small pile ensembles/rain100.json, and the contact scenes of the oracle
+(bodies resting, sliding, rolling, tipping, settling), whose placements on slopes are computed
+here.
 
 With `--bench DIR` it writes instead the benchmark scenes of Box2D 3's suite (its
 shared/benchmarks.c), too large to commit, which the build generates for gamephysics_bench:
@@ -29,7 +30,7 @@ def write_scene(name, header, bodies):
     lines = [f"  {json.dumps(key)}: {json.dumps(value)}," for key, value in header.items()]
     body_lines = ",\n".join(f"    {json.dumps(body)}" for body in bodies)
     text = "{\n" + "\n".join(lines) + '\n  "bodies": [\n' + body_lines + "\n  ]\n}\n"
-    OUT.mkdir(parents=True, exist_ok=True)
+    (OUT / name).parent.mkdir(parents=True, exist_ok=True)
     (OUT / name).write_text(text)
 
 
@@ -57,11 +58,10 @@ def pyramid20():
     }, bodies)
 
 
-def rain1000():
-    """1000 balls on a 40 x 25 grid, alternate rows offset by half a pitch, falling into an open
-    box of three static segments 80 m wide."""
-    columns, rows, pitch, radius, friction = 40, 25, 1.5, 0.5, 0.6
-    half_width, wall_height = 40.0, 60.0
+def rain(name, columns, rows, half_width, duration, description):
+    """columns x rows balls, alternate rows offset by half a pitch, falling into an open box of
+    three static segments 2 * half_width wide."""
+    pitch, radius, friction, wall_height = 1.5, 0.5, 0.6, 60.0
     bodies = [{
         "name": "box", "type": "static", "position": [0, 0],
         "shapes": [
@@ -81,12 +81,28 @@ def rain1000():
                 "name": f"ball{row * columns + column:04d}", "position": [x, y],
                 "shapes": [{"type": "circle", "radius": radius, "friction": friction}],
             })
-    write_scene("rain1000.json", {
-        "description": "1000 balls of radius 0.5 m (density 1 kg/m^2), friction 0.6, released "
-                       "from a 40 x 25 grid 1.5 m apart into an open box of three static "
-                       "segments 80 m wide, where they come to rest in a heap.",
-        "gravity": GRAVITY, "dt": DT, "duration": 8.0, "output_dt": 0.1,
+    write_scene(name, {
+        "description": description,
+        "gravity": GRAVITY, "dt": DT, "duration": duration, "output_dt": 0.1,
     }, bodies)
+
+
+def rain1000():
+    """1000 balls on a 40 x 25 grid falling into a box 80 m wide."""
+    rain("rain1000.json", 40, 25, 40.0, 8.0,
+         "1000 balls of radius 0.5 m (density 1 kg/m^2), friction 0.6, released "
+         "from a 40 x 25 grid 1.5 m apart into an open box of three static "
+         "segments 80 m wide, where they come to rest in a heap.")
+
+
+def rain100():
+    """100 balls on a 10 x 10 grid falling into a box 20 m wide: the pile of the ensembles
+    (docs/ensembles.md), small enough for thousands of samples. In a folder of its own, so that
+    `verify`, which runs every scene of scenes/, does not take it for one of its scenes."""
+    rain("ensembles/rain100.json", 10, 10, 10.0, 3.0,
+         "100 balls of radius 0.5 m (density 1 kg/m^2), friction 0.6, released from a "
+         "10 x 10 grid 1.5 m apart into an open box of three static segments 20 m wide; "
+         "after 3 s they are piling up.")
 
 
 def box(width, height, **surface):
@@ -259,4 +275,5 @@ if __name__ == "__main__":
     else:
         pyramid20()
         rain1000()
+        rain100()
         contact_scenes()

@@ -11,7 +11,9 @@ packages=(
   gcovr                # coverage summary in ./test.sh
   nlohmann-json3-dev   # all JSON: catalogue, scenes
   libcli11-dev         # the command line
-  libboost-dev         # Boost.Units for the dimensional audit
+  libboost-dev         # Boost.Units for the dimensional audit, Boost.Random's Sobol sequence
+  libtbb-dev           # the ensembles' samples on every core (verification/ensemble)
+  libopenmpi-dev openmpi-bin  # the ensembles across processes and machines (optional at build)
   libchipmunk-dev libbox2d-dev libbenchmark-dev  # peer engines and benchmarks (verification/)
   python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests

@@ -2,6 +2,7 @@
 // The subcommands of build/bin/gamephysics. Each returns the process exit code:
 // 0 success, 1 a check failed, 2 bad input.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -108,5 +109,29 @@ int longrun(const LongRunOptions& options);
 
 /// `gamephysics bench`: runs build/bin/gamephysics_bench (ours, Chipmunk2D, Box2D).
 int bench(bool quick);
+
+struct EnsembleOptions {
+  std::filesystem::path scene;
+  SceneOverrides overrides;
+  std::uint64_t samples = 0;
+  std::string uncertainty = "srs";  ///< "srs" or an uncertainty file (docs/ensembles.md)
+  std::string sampler = "sobol";    ///< sobol or random
+  std::uint64_t seed = 0;
+  std::filesystem::path out;  ///< the ensemble's folder
+  bool resume = false;        ///< keep the completed chunks in `out`, run the rest
+  int threads = 0;            ///< per process; 0: every core
+  bool oracle = false;        ///< run each sample in the oracle too, and compare
+  bool no_plots = false;
+  /// Instead of the ensemble: each integrator's numerical error against the input spread.
+  bool compare_numerical_error = false;
+};
+
+/// `gamephysics ensemble`: runs `samples` perturbed copies of a scene (docs/ensembles.md) on every
+/// core and, under an MPI launcher, on every rank; writes samples.csv, energy.csv, summary.json,
+/// report.md and plots into `out`. Exits 2 for bad input (writing nothing), 1 when the output
+/// cannot be written; failed samples are recorded, not fatal. With compare_numerical_error,
+/// writes instead numerical_error_vs_spread.csv and .md into `out`: per integrator, whether its
+/// numerical error is below the input spread.
+int ensemble(const EnsembleOptions& options);
 
 }  // namespace gp::cli

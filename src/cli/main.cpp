@@ -96,6 +96,25 @@ int main(int argc, char** argv) {
   longrun->add_option("--bodies", long_run.bodies, "Keep only the first N bodies of the file")
       ->check(CLI::PositiveNumber);
 
+  gp::cli::EnsembleOptions ensemble_run;
+  auto* ensemble = app.add_subcommand(
+      "ensemble", "Run a scene many times with its inputs drawn within their uncertainties");
+  gp::cli::add_scene_options(*ensemble, ensemble_run.scene, ensemble_run.overrides,
+                             gp::cli::kEveryOverride);
+  ensemble->add_option("--samples", ensemble_run.samples, "Number of samples")->required();
+  ensemble->add_option("--uncertainty", ensemble_run.uncertainty,
+                       "srs (the SRS's typical uncertainties, default) or a JSON file of spreads");
+  ensemble->add_option("--sampler", ensemble_run.sampler, "sobol (default) or random");
+  ensemble->add_option("--seed", ensemble_run.seed, "Seed of the sampler (default 0)");
+  ensemble->add_option("--out", ensemble_run.out, "Folder to write")->required();
+  ensemble->add_flag("--resume", ensemble_run.resume, "Continue the ensemble in --out");
+  ensemble->add_option("--threads", ensemble_run.threads, "Threads per process (default: all)");
+  ensemble->add_flag("--oracle", ensemble_run.oracle,
+                     "Run each sample in the SUNDIALS oracle too and record the engine's error");
+  ensemble->add_flag("--no-plots", ensemble_run.no_plots, "Do not make the plots");
+  ensemble->add_flag("--compare-numerical-error", ensemble_run.compare_numerical_error,
+                     "Per integrator: is its numerical error below the input spread?");
+
   bool quick_bench = false;
   auto* bench = app.add_subcommand("bench", "Benchmarks: ours, Chipmunk2D and Box2D, one run");
   bench->add_flag("--quick", quick_bench, "Fewer repetitions");
@@ -118,6 +137,7 @@ int main(int argc, char** argv) {
     if (*audit) return gp::cli::audit(root, audit_out, audit_results);
     if (*oracle) return gp::cli::oracle(oracle_run);
     if (*longrun) return gp::cli::longrun(long_run);
+    if (*ensemble) return gp::cli::ensemble(ensemble_run);
     return gp::cli::trace(
         root,
         out.empty() ? std::filesystem::path(root) / "traceability" : std::filesystem::path(out),

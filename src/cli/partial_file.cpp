@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "cli/interrupt_cleanup.hpp"
 #include "scene/input_error.hpp"
 
 namespace gp::cli {
@@ -14,8 +15,10 @@ PartialFile::PartialFile(std::filesystem::path target) : target_(std::move(targe
   }
   partial_ = target_;
   partial_ += ".partial";
+  interrupt_slot_ = remove_on_interrupt(partial_);
   out_.open(partial_, std::ios::binary);
   if (!out_.is_open()) {
+    release_on_interrupt(interrupt_slot_);
     throw InputError("--out", std::string("must be a writable file (") + std::strerror(errno) + ")",
                      target_.string());
   }
@@ -26,6 +29,7 @@ PartialFile::~PartialFile() {
   out_.close();
   std::error_code ignored;  // nothing more can be done about a leftover in a destructor
   std::filesystem::remove(partial_, ignored);
+  release_on_interrupt(interrupt_slot_);
 }
 
 void PartialFile::commit() {
@@ -33,6 +37,7 @@ void PartialFile::commit() {
   if (out_.fail()) throw std::runtime_error("cannot write " + partial_.string());
   std::filesystem::rename(partial_, target_);
   committed_ = true;
+  release_on_interrupt(interrupt_slot_);
 }
 
 }  // namespace gp::cli

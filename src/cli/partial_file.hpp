@@ -1,6 +1,7 @@
 #pragma once
 // Output written beside its target and renamed onto it only when complete, so that a run that
-// fails leaves no file (and no half-written one) under the target's name.
+// fails leaves no file (and no half-written one) under the target's name; a SIGINT or SIGTERM
+// removes it too (interrupt_cleanup.hpp).
 
 #include <filesystem>
 #include <fstream>
@@ -28,6 +29,7 @@ class PartialFile {
   std::filesystem::path partial_;
   std::ofstream out_;
   bool committed_ = false;
+  int interrupt_slot_;  ///< the partial file's registration with the interrupt handler
 };
 
 }  // namespace gp::cli
