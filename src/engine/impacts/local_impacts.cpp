@@ -206,7 +206,7 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
           }
           continue;
         }
-        const WorldShapeView there = to_world(ctx.shapes[k].local, frame_at(k, tau));
+        const WorldShape there = to_world(ctx.shapes[k].local, frame_at(k, tau));
         const auto when = impact_time({ctx.shapes[i], here, end[i]}, {ctx.shapes[k], there, end[k]},
                                       motion, {tau, h}, f);
         if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
