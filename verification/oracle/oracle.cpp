@@ -93,8 +93,8 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
   const oracle::World world = oracle::build_world(scene);
   oracle::EventWatch watch(world, options.contact_tolerance, options.speed_tolerance);
   if (options.method == OracleMethod::TimeStepping) {
-    const oracle::SteppedRun run =
-        oracle::time_stepping(world, watch.pairs(), output_times, options.step);
+    const oracle::SteppedRun run = oracle::time_stepping(world, watch.pairs(), output_times,
+                                                         options.step, options.contact_tolerance);
     OracleResult result;
     result.times.assign(output_times.begin(), output_times.end());
     for (const auto& motions : run.motions) result.states.push_back(report(motions));

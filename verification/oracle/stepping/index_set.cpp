@@ -9,7 +9,7 @@
 namespace gp::oracle {
 
 std::vector<StepContact> index_set(const World& world, std::span<const HullPair> pairs,
-                                   std::span<const Motion> motions, double h) {
+                                   std::span<const Motion> motions, double h, double tolerance) {
   std::vector<StepContact> contacts;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const HullPair& pair = pairs[p];
@@ -22,7 +22,7 @@ std::vector<StepContact> index_set(const World& world, std::span<const HullPair>
     const double ra = reach(ha), rb = reach(hb);
     const double speed = a.velocity.norm() + b.velocity.norm() + std::abs(a.angular_velocity) * ra +
                          std::abs(b.angular_velocity) * rb;
-    if ((a.position - b.position).norm() - ra - rb > 0.5 * h * speed) continue;
+    if ((a.position - b.position).norm() - ra - rb > 0.5 * h * speed + tolerance) continue;
     // Every nearest feature pair (an unbounded margin): whether it closes within the step is
     // decided below, on its rate, not on a fixed distance.
     const ContactGeometry geometry =
@@ -31,7 +31,7 @@ std::vector<StepContact> index_set(const World& world, std::span<const HullPair>
     for (const ContactPoint& point : geometry.points) {
       ActiveContact c = make_active_contact(world, pair, p, point.feature);
       ContactKinematics k = contact_kinematics(c, motions[c.first], motions[c.second]);
-      if (k.gap + 0.5 * h * k.gap_rate <= 0.0) contacts.push_back({c, k});
+      if (k.gap + 0.5 * h * k.gap_rate <= tolerance) contacts.push_back({c, k});
     }
   }
   return contacts;

@@ -18,8 +18,10 @@ struct StepContact {
 
 /// The contacts among `pairs` of `world` at `motions` (every body's) for a step of `h` [s, > 0]:
 /// the nearest feature pairs of each pair of hulls (contact_geometry) whose gap g [m] and rate ġ
-/// [m/s] give g + ½ h ġ ≤ 0 (Acary and Brogliato 2008, §10.1: the prediction at θ = ½).
+/// [m/s] give g + ½ h ġ ≤ `tolerance` [m] (Acary and Brogliato 2008, §10.1: the prediction at
+/// θ = ½, with the oracle's contact tolerance, so that bodies touching up to round-off, a disc
+/// set on a ramp, are held from the first step rather than falling through one step freely).
 std::vector<StepContact> index_set(const World& world, std::span<const HullPair> pairs,
-                                   std::span<const Motion> motions, double h);
+                                   std::span<const Motion> motions, double h, double tolerance);
 
 }  // namespace gp::oracle

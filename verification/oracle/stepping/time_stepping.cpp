@@ -8,7 +8,7 @@
 namespace gp::oracle {
 
 SteppedRun time_stepping(const World& world, std::span<const HullPair> pairs,
-                         std::span<const double> times, double step) {
+                         std::span<const double> times, double step, double tolerance) {
   SteppedRun run;
   std::vector<Motion> motions;
   for (const RigidBody& b : world.bodies) motions.push_back(b.initial);
@@ -18,7 +18,7 @@ SteppedRun time_stepping(const World& world, std::span<const HullPair> pairs,
     const long count = std::lround(std::ceil((t_out - t) / step - 1e-9));
     const double h = count > 0 ? (t_out - t) / static_cast<double>(count) : 0.0;
     for (long i = 0; i < count; ++i) {
-      const std::vector<StepContact> contacts = index_set(world, pairs, motions, h);
+      const std::vector<StepContact> contacts = index_set(world, pairs, motions, h, tolerance);
       for (const StepContact& c : contacts) {
         run.deepest_overlap = std::max(run.deepest_overlap, -c.kinematics.gap);
       }

@@ -19,8 +19,9 @@ struct SteppedRun {
 
 /// The bodies of `world` from their initial motions to each of `times` [s, non-decreasing, ≥ 0],
 /// watching `pairs`, in steps of at most `step` [s, > 0]: each interval between output instants
-/// is cut into equal steps, so that every output instant is reached exactly.
+/// is cut into equal steps, so that every output instant is reached exactly. Hulls within
+/// `tolerance` [m] at mid-step are in contact (index_set).
 SteppedRun time_stepping(const World& world, std::span<const HullPair> pairs,
-                         std::span<const double> times, double step);
+                         std::span<const double> times, double step, double tolerance);
 
 }  // namespace gp::oracle
