@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "oracle_scenes.hpp"
 #include "scene/scene.hpp"
 #include "verification/oracle/oracle.hpp"
 
@@ -23,22 +24,13 @@ namespace {
 constexpr double kG = 9.81;
 constexpr double kRadius = 0.5;
 
-// A disc of radius 0.5 m, its centre `drop` m above its resting height on a static ground, both
-// surfaces of restitution `restitution`.
+// A disc of radius 0.5 m and 1 kg, its centre `drop` m above its resting height on a static
+// ground, both surfaces of restitution `restitution`.
 gp::Scene dropped_disc(double drop, double restitution) {
-  gp::Scene scene{};
-  scene.settings.gravity = {0.0, -kG};
-  gp::BodyDef ground;
-  ground.name = "ground";
-  ground.type = gp::BodyType::Static;
-  ground.shapes.push_back({gp::Shape::segment({-10.0, 0.0}, {10.0, 0.0}), restitution});
-  gp::BodyDef disc;
-  disc.name = "disc";
-  disc.mass = 1.0;
-  disc.position = {0.0, kRadius + drop};
-  disc.shapes.push_back({gp::Shape::circle(kRadius), restitution});
-  scene.bodies = {ground, disc};
-  return scene;
+  return gp::test::scene_of(
+      gp::test::with_gravity(kG),
+      {gp::test::ground(restitution),
+       gp::test::disc("disc", {0.0, kRadius + drop}, Vec2::Zero(), kRadius, 1.0, restitution)});
 }
 
 OracleOptions stepping(double h) {
