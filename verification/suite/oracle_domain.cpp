@@ -21,7 +21,7 @@ constexpr std::pair<std::string_view, std::string_view> kOutside[] = {
      "hulls (every two discs) at every stop of its root finder and resolves the pile one event "
      "at a time (settle50, 50 discs, passes 10,000 events by t = 1.58 s); its time-stepping "
      "tests those pairs at every step and solves the heap as one dense LCP of about 3,000 "
-     "contacts (settle50's takes 8 s of CPU for 3 s); not tried"},
+     "contacts (settle50's takes 7 s of CPU for 3 s); not tried"},
     {"hard case cradle, balls touching",
      "five touching balls struck at once: the oracle resolves simultaneous impacts by Newton's "
      "law at every contact at once (one LCP), which does not pass the velocity along ball by "

@@ -16,7 +16,7 @@ namespace gp::verification {
 
 namespace {
 
-// s: the reference's step, and its estimate's at half of it: 8 s and 16 s of CPU for settle50's
+// s: the reference's step, and its estimate's at half of it: 7 s and 13 s of CPU for settle50's
 // 3 s. Finer steps do not narrow the chaotic band (docs/oracle.md).
 constexpr double kReferenceStep = 2.5e-4;
 
