@@ -69,10 +69,11 @@ def simulate(scene: Union[Scene, str, os.PathLike], integrator: Optional[str] = 
 
 def oracle(scene: Union[Scene, str, os.PathLike], method: str = "cvode-adams",
            rtol: float = 1e-12, atol: float = 1e-12, duration: Optional[float] = None,
-           output_dt: Optional[float] = None) -> Trajectory:
+           output_dt: Optional[float] = None, step: float = 1e-3) -> Trajectory:
     """Solves a scene (a Scene, or the path of a scene file) with the SUNDIALS oracle, as
     `gamephysics oracle` does (method: cvode-adams, cvode-bdf or arkode-erk; rtol, atol its
-    tolerances), into the same Trajectory as simulate, at the same output instants: the reference
+    tolerances; or time-stepping, first order, for piles, with its step in s), into the same
+    Trajectory as simulate, at the same output instants: the reference
     to measure a simulation's error against (docs/oracle.md). Raises InputError for bad input,
     ValueError (a std::domain_error) when the scene leaves the oracle's domain."""
     overrides = dict(duration=duration, output_dt=output_dt)
@@ -80,4 +81,4 @@ def oracle(scene: Union[Scene, str, os.PathLike], method: str = "cvode-adams",
         scene = load_scene(os.fspath(scene), **overrides)
     elif any(value is not None for value in overrides.values()):
         scene = load_scene(scene.path, **overrides)
-    return Trajectory(*_oracle(scene, method, rtol, atol))
+    return Trajectory(*_oracle(scene, method, rtol, atol, step))

@@ -84,16 +84,19 @@ py::tuple run(const SceneFile& file) {
 }
 
 /// The oracle's solution of the scene at every output instant (verification/oracle).
-py::tuple solve(const SceneFile& file, const std::string& method, double rtol, double atol) {
+py::tuple solve(const SceneFile& file, const std::string& method, double rtol, double atol,
+                double step) {
   const Scene& scene = file.scene;
   verification::OracleOptions options;
   const auto chosen = verification::oracle_method_from_name(method);
   if (!chosen) {
-    throw InputError("method", "must be cvode-adams, cvode-bdf or arkode-erk", method);
+    throw InputError("method", "must be cvode-adams, cvode-bdf, arkode-erk or time-stepping",
+                     method);
   }
   options.method = *chosen;
   options.rtol = rtol;
   options.atol = atol;
+  options.step = step;
   StateArrays arrays(scene);
   const OutputTimes output(scene.duration, scene.output_dt);
   std::vector<double> times;
@@ -138,7 +141,8 @@ void bind_scenes(py::module_& m) {
       "Reads and checks a scene file; the options replace the file's values, as the command "
       "line's do. Raises InputError with the command line's message.");
   m.def("_run", &run, py::arg("scene"));
-  m.def("_oracle", &solve, py::arg("scene"), py::arg("method"), py::arg("rtol"), py::arg("atol"));
+  m.def("_oracle", &solve, py::arg("scene"), py::arg("method"), py::arg("rtol"), py::arg("atol"),
+        py::arg("step"));
 }
 
 }  // namespace gp::python

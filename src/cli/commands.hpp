@@ -52,9 +52,10 @@ struct OracleCommandOptions {
   std::filesystem::path out;                    ///< the trajectory CSV to write
   std::optional<std::filesystem::path> events;  ///< the impact log CSV to write
   SceneOverrides overrides;                     ///< duration and output_dt; dt is not used
-  std::string method = "cvode-adams";           ///< cvode-adams, cvode-bdf or arkode-erk
-  std::optional<double> rtol;                   ///< default: the oracle's
+  std::string method = "cvode-adams";  ///< cvode-adams, cvode-bdf, arkode-erk or time-stepping
+  std::optional<double> rtol;          ///< default: the oracle's
   std::optional<double> atol;
+  std::optional<double> step;  ///< s: time-stepping's step; default: the oracle's
 };
 
 /// `gamephysics oracle`: integrates a scene file with the SUNDIALS oracle (verification/oracle)

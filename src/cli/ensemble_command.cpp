@@ -46,8 +46,12 @@ EnsembleSetup setup_of(const EnsembleOptions& o, std::string& blamed) {
   s.spreads = o.uncertainty == "srs" ? verification::srs_spreads()
                                      : verification::read_spreads(o.uncertainty);
   blamed = o.scene.string();
-  // A scene declared outside the oracle's domain would only record the declaration per sample.
-  if (const auto reason = verification::outside_oracle_domain(o.scene.stem().string());
+  // A scene declared outside the oracle's domain would only record the declaration per sample, and
+  // a chaotic pile's samples have no trajectory to compare.
+  const std::string stem = o.scene.stem().string();
+  if (const auto reason = verification::outside_oracle_domain(stem).has_value()
+                              ? verification::outside_oracle_domain(stem)
+                              : verification::chaotic_pile(stem);
       o.oracle && reason) {
     throw InputError("--oracle", "needs a scene in the oracle's domain", std::string(*reason));
   }
@@ -142,7 +146,8 @@ int compare(const EnsembleSetup& setup, const EnsembleOptions& options) {
   const std::string name = options.scene.stem().string();
   const auto rows =
       verification::error_against_spread(setup.nominal, setup.spreads, setup.samples, setup.seed,
-                                         !verification::outside_oracle_domain(name).has_value());
+                                         !verification::outside_oracle_domain(name).has_value() &&
+                                             !verification::chaotic_pile(name).has_value());
   std::filesystem::create_directories(options.out);
   PartialFile csv(options.out / "numerical_error_vs_spread.csv");
   PartialFile md(options.out / "numerical_error_vs_spread.md");

@@ -55,9 +55,11 @@ int main(int argc, char** argv) {
   oracle->add_option("--out", oracle_run.out, "Trajectory CSV to write")->required();
   oracle->add_option("--events", oracle_run.events, "Impact log CSV to write");
   oracle->add_option("--method", oracle_run.method,
-                     "cvode-adams (default), cvode-bdf or arkode-erk");
+                     "cvode-adams (default), cvode-bdf, arkode-erk, or time-stepping (piles)");
   oracle->add_option("--rtol", oracle_run.rtol, "Relative tolerance, > 0 (default 1e-10)");
   oracle->add_option("--atol", oracle_run.atol, "Absolute tolerance, > 0 (default 1e-10)");
+  oracle->add_option("--step", oracle_run.step,
+                     "time-stepping's largest step [s], > 0 (default 1e-3; first order)");
 
   gp::cli::PeerOptions peer_run;
   auto* peer = app.add_subcommand("peer", "Run a scene file in Chipmunk2D or Box2D, write CSV");

@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "verification/oracle_csv.hpp"
 #include "cli/partial_file.hpp"
 #include "engine/output/output_times.hpp"
 #include "engine/scene/scene_space.hpp"
 #include "scene/input_error.hpp"
 #include "verification/oracle/oracle.hpp"
+#include "verification/oracle_csv.hpp"
 
 namespace gp::cli {
 
@@ -21,13 +21,15 @@ int oracle(const OracleCommandOptions& options) {
   verification::OracleOptions settings;
   const auto method = verification::oracle_method_from_name(options.method);
   if (!method) {
-    std::cerr << "error: oracle: --method must be cvode-adams, cvode-bdf or arkode-erk, got "
+    std::cerr << "error: oracle: --method must be cvode-adams, cvode-bdf, arkode-erk or "
+                 "time-stepping, got "
               << options.method << "\n";
     return kBadInput;
   }
   settings.method = *method;
   settings.rtol = options.rtol.value_or(settings.rtol);
   settings.atol = options.atol.value_or(settings.atol);
+  settings.step = options.step.value_or(settings.step);
   Scene scene;
   std::unique_ptr<PartialFile> out, events;
   verification::OracleResult result;
@@ -55,10 +57,15 @@ int oracle(const OracleCommandOptions& options) {
   }
   std::cout << "wrote " << options.out.string() << ": " << scene.bodies.size()
             << " bodies from t = 0 to " << scene.duration << " s by "
-            << verification::oracle_method_name(settings.method) << " (rtol " << settings.rtol
-            << ", atol " << settings.atol << ", " << result.steps << " steps), "
-            << result.events.size() << " impacts, " << result.contact_changes
-            << " changes of contact, largest drift " << result.largest_drift << " m\n";
+            << verification::oracle_method_name(settings.method);
+  if (settings.method == verification::OracleMethod::TimeStepping) {
+    std::cout << " (step " << settings.step << " s, " << result.steps << " steps), deepest overlap "
+              << result.largest_drift << " m\n";
+  } else {
+    std::cout << " (rtol " << settings.rtol << ", atol " << settings.atol << ", " << result.steps
+              << " steps), " << result.events.size() << " impacts, " << result.contact_changes
+              << " changes of contact, largest drift " << result.largest_drift << " m\n";
+  }
   return 0;
 }
 

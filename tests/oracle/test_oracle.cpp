@@ -16,6 +16,7 @@
 #include "engine/scene/scene_space.hpp"
 #include "gamephysics/gamephysics.hpp"
 #include "gamephysics/models/dd/kinetic_energy.hpp"
+#include "oracle_scenes.hpp"
 #include "verification/oracle/oracle.hpp"
 #include "verification/oracle_csv.hpp"
 
@@ -27,6 +28,10 @@ using gp::verification::OracleResult;
 using gp::verification::run_oracle;
 
 using gp::test::check_near;
+using gp::test::disc;
+using gp::test::ground;
+using gp::test::scene_of;
+using gp::test::with_gravity;
 
 namespace {
 
@@ -44,31 +49,6 @@ OracleOptions tight(OracleMethod method, double tolerance = 1e-12) {
 // of the orbit, or of a fall sharpening as 1/r², the error adds up to about 1e3 rtol, so the
 // scenes with gravitation ask for 1e-14.
 constexpr double kGravitationTolerance = 1e-14;
-
-gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velocity, double radius,
-                 double mass, double restitution) {
-  gp::BodyDef def;
-  def.name = name;
-  def.position = position;
-  def.velocity = velocity;
-  def.mass = mass;
-  def.shapes.push_back({gp::Shape::circle(radius), restitution});
-  return def;
-}
-
-gp::BodyDef ground(double restitution) {
-  gp::BodyDef def;
-  def.name = "ground";
-  def.type = gp::BodyType::Static;
-  def.shapes.push_back({gp::Shape::segment({-10.0, 0.0}, {10.0, 0.0}), restitution});
-  return def;
-}
-
-gp::Settings with_gravity(double g) {
-  gp::Settings settings;
-  settings.gravity = {0.0, -g};
-  return settings;
-}
 
 struct Totals {
   Vec2 momentum = Vec2::Zero();   // kg·m/s
@@ -97,13 +77,6 @@ struct Scenario {
   gp::Scene scene;
   std::vector<double> times;
 };
-
-gp::Scene scene_of(const gp::Settings& settings, std::vector<gp::BodyDef> bodies) {
-  gp::Scene scene{};
-  scene.settings = settings;
-  scene.bodies = std::move(bodies);
-  return scene;
-}
 
 // Point masses 3 kg and 1 kg, 2 m apart, G = 1, circling their barycentre at the origin:
 // ω² = G (m₁ + m₂) / r³.

@@ -107,6 +107,14 @@ def test_the_oracle_and_simulate_share_their_instants_and_agree(tmp_path):
     assert np.max(np.abs(game["ball"].y - reference["ball"].y)) < 1e-9
 
 
+def test_the_oracle_time_steps_free_fall_exactly(tmp_path):
+    # Time-stepping's positions follow the trapezoid, exact under constant gravity: the ball's
+    # fall to 1 s (its first impact is at 1.39 s) matches the closed form to rounding.
+    run = gp.oracle(ball_scene(tmp_path / "ball.json", 0.8), method="time-stepping", step=1e-3,
+                    duration=1.0)
+    assert np.max(np.abs(run["ball"].y - (10 - 0.5 * G * run.t ** 2))) < 1e-9
+
+
 def test_the_oracle_refuses_a_scene_outside_its_domain(tmp_path):
     scene = json.loads(open(ball_scene(tmp_path / "ball.json", 0.5)).read())
     scene["bodies"][1]["position"] = [0, 0]  # the ball starts inside the ground

@@ -64,6 +64,8 @@ std::unique_ptr<OdeSolver> make_ode_solver(const OracleOptions& options, OdeProb
       return std::make_unique<CvodeSolver>(CvodeSolver::Family::Bdf, options, problem, t0, y0);
     case OracleMethod::ArkodeErk:
       return std::make_unique<ArkodeSolver>(options, problem, t0, y0);
+    case OracleMethod::TimeStepping:
+      break;  // no ODE: run_oracle steps the scene itself
   }
   throw std::invalid_argument("unknown oracle method");
 }

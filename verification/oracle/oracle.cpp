@@ -13,25 +13,28 @@
 #include "verification/oracle/model/world.hpp"
 #include "verification/oracle/ode_problem.hpp"
 #include "verification/oracle/ode_solver.hpp"
+#include "verification/oracle/stepping/time_stepping.hpp"
 #include "verification/oracle/zeno_guard.hpp"
 
 namespace gp::verification {
 
 namespace {
 
-constexpr std::array<std::pair<OracleMethod, std::string_view>, 3> kMethodNames{{
+constexpr std::array<std::pair<OracleMethod, std::string_view>, 4> kMethodNames{{
     {OracleMethod::CvodeAdams, "cvode-adams"},
     {OracleMethod::CvodeBdf, "cvode-bdf"},
     {OracleMethod::ArkodeErk, "arkode-erk"},
+    {OracleMethod::TimeStepping, "time-stepping"},
 }};
 
 void validate(const OracleOptions& o, std::span<const double> times) {
   const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   if (!positive(o.rtol)) throw std::invalid_argument("oracle: rtol must be finite and > 0");
   if (!positive(o.atol)) throw std::invalid_argument("oracle: atol must be finite and > 0");
-  if (!positive(o.contact_tolerance) || !positive(o.rest_speed) || !positive(o.speed_tolerance)) {
+  if (!positive(o.contact_tolerance) || !positive(o.rest_speed) || !positive(o.speed_tolerance) ||
+      !positive(o.step)) {
     throw std::invalid_argument(
-        "oracle: contact_tolerance, rest_speed and speed_tolerance must be finite and > 0");
+        "oracle: contact_tolerance, rest_speed, speed_tolerance and step must be finite and > 0");
   }
   if (o.max_events < 1 || o.zeno_events < 2 || !(o.zeno_window >= 0.0) || o.max_steps < 1) {
     throw std::invalid_argument(
@@ -88,8 +91,18 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
                         const OracleOptions& options) {
   validate(options, output_times);
   const oracle::World world = oracle::build_world(scene);
-  oracle::HybridSystem system(world);
   oracle::EventWatch watch(world, options.contact_tolerance, options.speed_tolerance);
+  if (options.method == OracleMethod::TimeStepping) {
+    const oracle::SteppedRun run = oracle::time_stepping(world, watch.pairs(), output_times,
+                                                         options.step, options.contact_tolerance);
+    OracleResult result;
+    result.times.assign(output_times.begin(), output_times.end());
+    for (const auto& motions : run.motions) result.states.push_back(report(motions));
+    result.steps = run.steps;
+    result.largest_drift = run.deepest_overlap;
+    return result;
+  }
+  oracle::HybridSystem system(world);
   oracle::ContactEvents contacts(system, watch, options);
   oracle::ZenoGuard zeno(options);
   OracleResult result;

@@ -28,9 +28,12 @@ enum class OracleMethod {
   CvodeAdams,  ///< CVODE, variable-order (1–12) Adams–Moulton with functional iteration
   CvodeBdf,    ///< CVODE, variable-order (1–5) BDF with Newton iteration on a dense Jacobian
   ArkodeErk,   ///< ARKODE ERKStep, explicit Fehlberg 13(7)8 Runge–Kutta pair (order 8)
+  /// Moreau–Jean time-stepping at a fixed step (stepping/), first order: the reference for piles,
+  /// whose events the three above cannot afford; rtol and atol do not apply, `step` does.
+  TimeStepping,
 };
 
-/// "cvode-adams", "cvode-bdf", "arkode-erk".
+/// "cvode-adams", "cvode-bdf", "arkode-erk", "time-stepping".
 std::string_view oracle_method_name(OracleMethod method);
 /// The method named `name`, or nothing.
 std::optional<OracleMethod> oracle_method_from_name(std::string_view name);
@@ -55,6 +58,9 @@ struct OracleOptions {
   /// A Zeno sequence: `zeno_events` events within `zeno_window` [s].
   std::size_t zeno_events = 50;
   double zeno_window = 1e-6;
+  /// s, > 0: TimeStepping's largest step h (each interval between output instants is cut into
+  /// equal steps no longer than this).
+  double step = 1e-3;
   /// Most solver steps in a run (a bound on the work); more is a solver failure.
   long max_steps = 10'000'000;
 };
@@ -75,7 +81,8 @@ struct OracleResult {
   std::vector<OracleEvent> events;             ///< impacts, in time order
   long contact_changes = 0;  ///< events that changed the contacts without an impulse
   long steps = 0;            ///< solver steps taken, for the curious
-  /// m: the largest |gap| of an active contact at an output instant or event (the drift).
+  /// m: the largest |gap| of an active contact at an output instant or event (the drift); with
+  /// TimeStepping, the deepest overlap of a contact at a step's start (first order in the step).
   double largest_drift = 0.0;
 };
 

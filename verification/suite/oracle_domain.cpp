@@ -17,30 +17,46 @@ constexpr std::pair<std::string_view, std::string_view> kOutside[] = {
      "1,700 unknowns, and every right-hand side solves a dense system of about 840 forces; far "
      "too slow (pyramid6, 21 boxes, takes 0.5 s a simulated second)"},
     {"rain1000",
-     "1000 discs falling into a pile: the oracle watches about 500,000 pairs of hulls (every two "
-     "discs) at every stop of its root finder and resolves the pile one event at a time; "
-     "settle50, 50 discs, is already beyond it (see there)"},
+     "1000 discs falling into a pile: the event-driven oracle watches about 500,000 pairs of "
+     "hulls (every two discs) at every stop of its root finder and resolves the pile one event "
+     "at a time (settle50, 50 discs, passes 10,000 events by t = 1.58 s); its time-stepping "
+     "tests those pairs at every step and solves the heap as one dense LCP of about 3,000 "
+     "contacts (settle50's takes 7 s of CPU for 3 s); not tried"},
     {"hard case cradle, balls touching",
      "five touching balls struck at once: the oracle resolves simultaneous impacts by Newton's "
      "law at every contact at once (one LCP), which does not pass the velocity along ball by "
      "ball as the closed form and the engine's sequential impacts do (measured 1.2 m/s apart "
      "after the impact); the case checks the sequential model, the closed form is its "
      "reference"},
-    {"settle50",
-     "50 discs falling into a heap: the oracle passes its bound of 10,000 events at t = 1.58 s "
-     "of 3 s (cvode-adams, rtol 1e-12, 39 s of CPU), impacts cascading through the heap and "
-     "contacts let go and taken up again; with friction (0.1 to 0.5, C_R 0 to 0.2) it stops by "
-     "t = 1.10 s, on 10,000 events or on a contact problem with sliding contacts that has no "
-     "solution Lemke's method reaches (docs/oracle.md)"},
 };
 
-}  // namespace
+// The chaotic piles: their trajectories are never compared with a reference; the pile section
+// (pile.cpp) compares what is well posed with the oracle's time-stepping reference.
+constexpr std::pair<std::string_view, std::string_view> kChaoticPiles[] = {
+    {"settle50",
+     "50 discs settling into a heap: which disc ends where is chaotic (the oracle's own "
+     "time-stepping at 0.5 and 0.25 ms ends in different packings, heights up to 0.22 m apart), "
+     "so trajectories are not compared; the energy over time, the time to settle and the settled "
+     "profile are, against the oracle's time-stepping (section 'chaotic pile')"},
+};
 
-std::optional<std::string_view> outside_oracle_domain(std::string_view name) {
-  for (const auto& [scene, reason] : kOutside) {
+template <std::size_t N>
+std::optional<std::string_view> reason_in(
+    const std::pair<std::string_view, std::string_view> (&list)[N], std::string_view name) {
+  for (const auto& [scene, reason] : list) {
     if (scene == name) return reason;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string_view> chaotic_pile(std::string_view name) {
+  return reason_in(kChaoticPiles, name);
+}
+
+std::optional<std::string_view> outside_oracle_domain(std::string_view name) {
+  return reason_in(kOutside, name);
 }
 
 OracleOptions reference_options(const Scene& scene) {
@@ -61,6 +77,11 @@ std::optional<OracleReference> oracle_reference(CheckList& list, const std::stri
   if (const auto reason = outside_oracle_domain(name)) {
     list.report(name + ": oracle", "",
                 "declared outside the oracle's domain: " + std::string(*reason));
+    return std::nullopt;
+  }
+  if (const auto reason = chaotic_pile(name)) {
+    list.report(name + ": oracle", "",
+                "a chaotic pile, compared on what is well posed: " + std::string(*reason));
     return std::nullopt;
   }
   OracleReference r;

@@ -37,6 +37,29 @@ Impulse resolve_one(const World& world, const ActiveContact& c, const ContactKin
 
 }  // namespace
 
+std::vector<Impulse> solve_impulses(const World& world, std::span<const FrictionRow> rows,
+                                    std::span<Vec2> velocity, std::span<double> angular_velocity) {
+  FrictionLcp lcp = friction_lcp(world, rows);
+  auto z = solve_lcp(lcp.M, lcp.q);
+  if (!z) {
+    // The problem has a solution (its matrix is copositive, and q is of Anitescu and Potra's
+    // form), but degenerate ones (a pile: dozens of contacts, most at rest) can end Lemke's method
+    // on a ray by round-off. M + εI is strictly copositive, which it always solves; ε = 1e-14 of
+    // the largest diagonal entry moves the impulses by about that share of themselves.
+    lcp.M.diagonal().array() += kRegularisation * lcp.M.diagonal().cwiseAbs().maxCoeff();
+    z = solve_lcp(lcp.M, lcp.q);
+  }
+  if (!z) throw std::runtime_error("no impulses satisfy Newton's and Coulomb's laws");
+  for (Eigen::Index k = 0; k < z->size(); ++k) {
+    add_response(world, lcp.push[static_cast<std::size_t>(k)], (*z)[k], velocity, angular_velocity);
+  }
+  std::vector<Impulse> impulses;
+  for (const FrictionSlots& s : lcp.slots) {
+    impulses.push_back({(*z)[s.normal], s.plus < 0 ? 0.0 : (*z)[s.plus] - (*z)[s.plus + 1]});
+  }
+  return impulses;
+}
+
 std::vector<Impulse> resolve_impacts(const World& world, std::span<const ActiveContact> contacts,
                                      std::span<const ContactKinematics> kinematics,
                                      double rest_speed, std::span<Vec2> velocity,
@@ -57,25 +80,7 @@ std::vector<Impulse> resolve_impacts(const World& world, std::span<const ActiveC
                     (1.0 + restitution_of(c, kinematics[i], rest_speed)) * arrival,
                     dot(tangent, velocity, angular_velocity), c.friction, c.friction > 0.0});
   }
-  FrictionLcp lcp = friction_lcp(world, rows);
-  auto z = solve_lcp(lcp.M, lcp.q);
-  if (!z) {
-    // The problem has a solution (its matrix is copositive, and q is of Anitescu and Potra's
-    // form), but degenerate ones (a pile: dozens of contacts, most at rest) can end Lemke's method
-    // on a ray by round-off. M + εI is strictly copositive, which it always solves; ε = 1e-14 of
-    // the largest diagonal entry moves the impulses by about that share of themselves.
-    lcp.M.diagonal().array() += kRegularisation * lcp.M.diagonal().cwiseAbs().maxCoeff();
-    z = solve_lcp(lcp.M, lcp.q);
-  }
-  if (!z) throw std::runtime_error("no impulses satisfy Newton's and Coulomb's laws");
-  for (Eigen::Index k = 0; k < z->size(); ++k) {
-    add_response(world, lcp.push[static_cast<std::size_t>(k)], (*z)[k], velocity, angular_velocity);
-  }
-  std::vector<Impulse> impulses;
-  for (const FrictionSlots& s : lcp.slots) {
-    impulses.push_back({(*z)[s.normal], s.plus < 0 ? 0.0 : (*z)[s.plus] - (*z)[s.plus + 1]});
-  }
-  return impulses;
+  return solve_impulses(world, rows, velocity, angular_velocity);
 }
 
 }  // namespace gp::oracle

@@ -17,6 +17,7 @@
 
 #include "verification/oracle/contact/active_contact.hpp"
 #include "verification/oracle/contact/contact_kinematics.hpp"
+#include "verification/oracle/contact/friction_lcp.hpp"
 #include "verification/oracle/model/rigid_body.hpp"
 
 namespace gp::oracle {
@@ -25,6 +26,14 @@ struct Impulse {
   double normal;   ///< p ≥ 0 [N·s] along the contact's normal, on the first body
   double tangent;  ///< p_t [N·s] along its tangent, on the first body
 };
+
+/// The impulses of the LCP of `rows` (each row's normal_rate: the gap's rate after the impulses
+/// less the impulses' share, plus e ġ⁻; its slip_rate likewise), one per row, with `velocity`
+/// [m/s] and `angular_velocity` [rad/s] of every body changed by them. Impacts and the
+/// time-stepping reference (stepping/moreau_jean.hpp) pose their problems this way. Throws
+/// std::runtime_error if Lemke's method fails, which the copositive-plus matrix rules out.
+std::vector<Impulse> solve_impulses(const World& world, std::span<const FrictionRow> rows,
+                                    std::span<Vec2> velocity, std::span<double> angular_velocity);
 
 /// The impulses at `contacts` (kinematics `kinematics`, taken before the impact), one each, with
 /// the velocities `velocity` [m/s] and `angular_velocity` [rad/s] of every body changed by them.

@@ -1,5 +1,7 @@
 #include "verification/oracle/geometry/placement.hpp"
 
+#include <algorithm>
+
 #include "verification/oracle/model/rotation.hpp"
 
 namespace gp::oracle {
@@ -14,6 +16,12 @@ Vec2 edge_normal(std::span<const Vec2> vertices, int edge) {
   const int n = static_cast<int>(vertices.size());
   const Vec2 along = vertices[(edge + 1) % n] - vertices[edge];
   return Vec2(along.y(), -along.x()).normalized();
+}
+
+double reach(const Hull& hull) {
+  double r = 0.0;
+  for (const Vec2& v : hull.vertices) r = std::max(r, v.norm());
+  return r + hull.radius;
 }
 
 }  // namespace gp::oracle

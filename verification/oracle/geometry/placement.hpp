@@ -18,6 +18,9 @@ std::vector<Vec2> placed_vertices(const Hull& hull, const Pose& pose);
 /// opposite).
 Vec2 edge_normal(std::span<const Vec2> vertices, int edge);
 
+/// m: the farthest point of `hull` from its body's centre of mass (the origin of its frame).
+double reach(const Hull& hull);
+
 /// How many edges a hull of `vertex_count` vertices has: none for a disc, the two sides of a
 /// segment, one per vertex of a polygon.
 inline int edge_count(int vertex_count) {

@@ -45,13 +45,6 @@ double half_thickness(const Hull& h) {
   return nearest + h.radius;
 }
 
-// m: the farthest point of the hull from its body's centre of mass.
-double reach(const Hull& h) {
-  double r = 0.0;
-  for (const Vec2& v : h.vertices) r = std::max(r, v.norm());
-  return r + h.radius;
-}
-
 Pose pose_of(const Motion& m) {
   return {m.position, m.angle};
 }

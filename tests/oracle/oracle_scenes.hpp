@@ -1,0 +1,48 @@
+#pragma once
+// Small scenes built in code for the oracle's tests: discs, a ground line, gravity.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace gp::test {
+
+/// A dynamic disc of `radius` [m] and `mass` [kg] at `position` [m] moving at `velocity` [m/s],
+/// its surface of restitution `restitution`.
+inline BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velocity,
+                    double radius, double mass, double restitution) {
+  BodyDef def;
+  def.name = name;
+  def.position = position;
+  def.velocity = velocity;
+  def.mass = mass;
+  def.shapes.push_back({Shape::circle(radius), restitution});
+  return def;
+}
+
+/// A static ground: the segment from (−10, 0) to (10, 0) m.
+inline BodyDef ground(double restitution) {
+  BodyDef def;
+  def.name = "ground";
+  def.type = BodyType::Static;
+  def.shapes.push_back({Shape::segment({-10.0, 0.0}, {10.0, 0.0}), restitution});
+  return def;
+}
+
+/// Uniform gravity of `g` [m/s²] downwards.
+inline Settings with_gravity(double g) {
+  Settings settings;
+  settings.gravity = {0.0, -g};
+  return settings;
+}
+
+inline Scene scene_of(const Settings& settings, std::vector<BodyDef> bodies) {
+  Scene scene{};
+  scene.settings = settings;
+  scene.bodies = std::move(bodies);
+  return scene;
+}
+
+}  // namespace gp::test
