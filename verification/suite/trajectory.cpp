@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -99,6 +100,17 @@ std::vector<double> output_instants(double duration, double step) {
   std::vector<double> times;
   for (std::size_t k = 0; k < output.size(); ++k) times.push_back(output[k]);
   return times;
+}
+
+Trajectory first_instants(const Trajectory& t, std::size_t n) {
+  Trajectory part;
+  part.times.assign(t.times.begin(), t.times.begin() + static_cast<std::ptrdiff_t>(n));
+  part.states.assign(t.states.begin(), t.states.begin() + static_cast<std::ptrdiff_t>(n));
+  const double end = part.times.back();
+  std::copy_if(t.impacts.begin(), t.impacts.end(), std::back_inserter(part.impacts),
+               [end](const Impact& i) { return i.time <= end; });
+  part.cpu_seconds = t.cpu_seconds;
+  return part;
 }
 
 Differences compare(const Trajectory& run, const Trajectory& reference) {

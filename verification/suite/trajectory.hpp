@@ -29,6 +29,9 @@ Trajectory run_engine(const Scene& scene, IntegratorKind integrator, double dt);
 /// recording anything: the median of repeated runs, repeated for at least 0.1 s in all.
 double time_engine(const Scene& scene, IntegratorKind integrator, double dt);
 
+/// The first `n` output instants of `t` and the impacts up to the last of them.
+Trajectory first_instants(const Trajectory& t, std::size_t n);
+
 /// The output instants k·step up to `duration` and the end [s], as the engine records them.
 std::vector<double> output_instants(double duration, double step);
 
