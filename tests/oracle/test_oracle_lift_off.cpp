@@ -36,17 +36,11 @@ OracleOptions with(OracleMethod method) {
 // Three frictionless discs (C_R = 0) dropped into a box 4 m wide: the top one strikes the other
 // two, rides on the right one and leaves it before it lands.
 gp::Scene three_discs() {
-  gp::BodyDef box;
-  box.name = "box";
-  box.type = gp::BodyType::Static;
-  box.shapes.push_back({gp::Shape::segment({-2.0, 0.0}, {2.0, 0.0})});
-  box.shapes.push_back({gp::Shape::segment({-2.0, 0.0}, {-2.0, 10.0})});
-  box.shapes.push_back({gp::Shape::segment({2.0, 0.0}, {2.0, 10.0})});
-  return gp::test::scene_of(
-      gp::test::with_gravity(kG),
-      {box, gp::test::disc("left", {-0.6, 1.0}, Vec2::Zero(), kRadius, 1.0, 0.0),
-       gp::test::disc("right", {0.5, 2.2}, Vec2::Zero(), kRadius, 1.0, 0.0),
-       gp::test::disc("top", {-0.1, 3.5}, Vec2::Zero(), kRadius, 1.0, 0.0)});
+  return gp::test::scene_of(gp::test::with_gravity(kG),
+                            {gp::test::open_box(2.0, 10.0, 0.0),
+                             gp::test::disc("left", {-0.6, 1.0}, Vec2::Zero(), kRadius, 1.0, 0.0),
+                             gp::test::disc("right", {0.5, 2.2}, Vec2::Zero(), kRadius, 1.0, 0.0),
+                             gp::test::disc("top", {-0.1, 3.5}, Vec2::Zero(), kRadius, 1.0, 0.0)});
 }
 
 constexpr std::size_t kRight = 2;
