@@ -31,6 +31,20 @@ inline BodyDef ground(double restitution) {
   return def;
 }
 
+/// A static open box: a floor from (−half_width, 0) to (half_width, 0) m and walls up to
+/// `height` m at both ends, every side of friction `friction` and C_R 0.
+inline BodyDef open_box(double half_width, double height, double friction) {
+  BodyDef def;
+  def.name = "box";
+  def.type = BodyType::Static;
+  for (const auto& [a, b] : {std::pair{Vec2(-half_width, 0.0), Vec2(half_width, 0.0)},
+                             std::pair{Vec2(-half_width, 0.0), Vec2(-half_width, height)},
+                             std::pair{Vec2(half_width, 0.0), Vec2(half_width, height)}}) {
+    def.shapes.push_back({Shape::segment(a, b), 0.0, friction});
+  }
+  return def;
+}
+
 /// Uniform gravity of `g` [m/s²] downwards.
 inline Settings with_gravity(double g) {
   Settings settings;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "check_near.hpp"
+#include "oracle_scenes.hpp"
 #include "scene/scene.hpp"
 #include "verification/oracle/oracle.hpp"
 
@@ -262,15 +263,7 @@ namespace {
 gp::Scene jammed_lattice(int rows, double friction) {
   gp::Scene scene{};
   scene.settings.gravity = {0.0, -kG};
-  gp::BodyDef box;
-  box.name = "box";
-  box.type = gp::BodyType::Static;
-  for (const auto& [a, b] :
-       {std::pair{Vec2(-2.5, 0.0), Vec2(2.5, 0.0)}, std::pair{Vec2(-2.5, 0.0), Vec2(-2.5, 10.0)},
-        std::pair{Vec2(2.5, 0.0), Vec2(2.5, 10.0)}}) {
-    box.shapes.push_back({gp::Shape::segment(a, b), 0.0, friction});
-  }
-  scene.bodies.push_back(box);
+  scene.bodies.push_back(gp::test::open_box(2.5, 10.0, friction));
   for (int row = 0; row < rows; ++row) {
     const int count = row % 2 == 0 ? 5 : 4;
     for (int k = 0; k < count; ++k) {

@@ -130,6 +130,7 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
   for (double t_out : output_times) {
     while (!reached(t, t_out)) {
       system.evaluate(t, solver->values(), snapshot);
+      contacts.require_pushing(snapshot);
       const double t_stop = std::min(t_out, t + std::max(watch.horizon(snapshot), kLeastStep * t));
       if (solver->advance(t_stop, t) == oracle::OdeSolver::Stop::Reached) {
         if (!solver->projects() && !system.contacts().empty()) {
@@ -154,6 +155,8 @@ OracleResult run_oracle(const Scene& scene, std::span<const double> output_times
       solver->restart(t);
     }
     contacts.require_apart(t_out, solver->values());
+    system.evaluate(t_out, solver->values(), snapshot);
+    contacts.require_pushing(snapshot);
     contacts.note_drift(t_out, solver->values());
     system.states().motions_at(t_out, solver->values(), motions);
     result.states.push_back(report(motions));

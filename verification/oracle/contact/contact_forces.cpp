@@ -40,7 +40,7 @@ std::vector<ContactForce> solve_contact_forces(const World& world,
                                                std::span<const ActiveContact> contacts,
                                                std::span<const ContactKinematics> kinematics,
                                                std::span<Vec2> linear, std::span<double> angular) {
-  std::vector<ContactForce> forces(contacts.size(), ContactForce{0.0, 0.0});
+  std::vector<ContactForce> forces(contacts.size(), ContactForce{0.0, 0.0, true});
   const std::vector<Unknown> unknowns = unknowns_of(contacts, kinematics);
   const auto n = static_cast<Eigen::Index>(unknowns.size());
   if (n == 0) return forces;
@@ -59,10 +59,12 @@ std::vector<ContactForce> solve_contact_forces(const World& world,
   solver.setThreshold(1e-10);
   solver.compute(a);
   const Eigen::VectorXd lambda = solver.solve(rhs);
+  const bool unique = solver.rank() == n;
   for (Eigen::Index k = 0; k < n; ++k) {
     const Unknown& u = unknowns[k];
     add_response(world, u.direction, lambda[k], linear, angular);
     ContactForce& f = forces[u.contact];
+    f.unique = unique;
     if (u.tangential) {
       f.tangent = lambda[k];
     } else {

@@ -18,6 +18,9 @@ namespace gp::oracle {
 struct ContactForce {
   double normal;   ///< f_n [N], ≥ 0 while the contact holds
   double tangent;  ///< f_t [N] along the contact's tangent, on the first body
+  /// Whether these are the only forces that hold the modes (the system has full rank); else
+  /// they are the least-norm share, and a negative f_n says nothing of a lift-off.
+  bool unique;
 };
 
 /// The forces of `contacts` (kinematics `kinematics`, one each) and, added into `linear` and

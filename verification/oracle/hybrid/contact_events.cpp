@@ -132,6 +132,15 @@ void ContactEvents::handle(double t, double* y, std::span<const int> crossed,
       detect(p, motions, kept);
     }
   }
+  // A contact whose lift-off fired stays dropped though it still touches: its force is past
+  // −floor, below what the mode LCP tells from zero, and kept it would be armed with a lift-off
+  // root already negative that never changes sign again, and pull.
+  std::erase_if(kept, [&](const ActiveContact& c) {
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      if (dropped[i] && same_contact(before[i], c)) return true;
+    }
+    return false;
+  });
   settle(t, motions, std::move(kept), y, impacts);
 }
 
@@ -228,6 +237,20 @@ void ContactEvents::note_drift(double t, const double* y) {
   system_.states().motions_at(t, y, motions);
   for (const ContactKinematics& k : kinematics_of(system_.contacts(), motions)) {
     largest_drift_ = std::max(largest_drift_, std::abs(k.gap));
+  }
+}
+
+void ContactEvents::require_pushing(const Snapshot& snapshot) const {
+  // Twice the floor: the root finder stops just past −floor, and a projection moves f_n by
+  // round-off.
+  const double least = -2.0 * watch_.force_floor();
+  for (std::size_t i = 0; i < snapshot.forces.size(); ++i) {
+    if (!snapshot.forces[i].unique || snapshot.forces[i].normal >= least) continue;
+    const ActiveContact& c = system_.contacts()[i];
+    throw OracleDomainError(describe(c.first, c.second) + " pull each other with " +
+                                message_number(snapshot.forces[i].normal) +
+                                " N at an active contact: a lift-off the oracle missed",
+                            snapshot.time);
   }
 }
 

@@ -33,6 +33,12 @@ class ContactEvents {
   /// tolerance at time t, state y: an impact the root finder missed.
   void require_apart(double t, const double* y) const;
 
+  /// Throws OracleDomainError when an active contact of `snapshot` (the system's, at a stop of
+  /// the solver) pulls with f_n below twice the force floor (EventWatch::force_floor): a
+  /// lift-off whose root function started negative, which the root finder can never see. Not
+  /// where the forces are not unique: their least-norm share may pull where others would not.
+  void require_pushing(const Snapshot& snapshot) const;
+
   /// Notes the largest |gap| of an active contact at time t, state y, as drift.
   void note_drift(double t, const double* y);
   /// m: the largest |gap| of an active contact noted, or left by a projection at an event.

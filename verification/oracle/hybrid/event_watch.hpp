@@ -47,6 +47,8 @@ class EventWatch {
   void release(std::size_t p);
 
   const std::vector<HullPair>& pairs() const { return pairs_; }
+  /// N: a contact force this small counts as zero; a lift-off is found at −force_floor().
+  double force_floor() const { return force_floor_; }
 
   /// Rebuilds the root functions for the active `contacts`, with every body at `motions`.
   void arm(std::span<const ActiveContact> contacts, std::span<const Motion> motions);
