@@ -104,7 +104,7 @@ std::vector<Check> pile_checks(const std::vector<NamedScene>& scenes, const Suit
                                  " J; settled profile: largest height difference " +
                                  figure(heights) + " m";
     const auto bound = std::find_if(std::begin(kPileBounds), std::end(kPileBounds),
-                                    [&](const PileBound& p) { return p.scene == name; });
+                                    [&name = name](const PileBound& p) { return p.scene == name; });
     if (bound == std::end(kPileBounds)) {
       list.report(label, "DD:kEnergy IM:transMot", measured + " (no bound measured yet)");
       continue;

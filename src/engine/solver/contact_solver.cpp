@@ -15,7 +15,7 @@ PositionLimits position_limits(const Settings& s) {
 
 void ContactSolver::prepare(StepContext& c) {
   batches_.build(c.contacts, c.inertia);
-  prepare_contacts(batches_, c.contacts, c.shapes, c.inertia, c.start, c.h, c.settings);
+  prepare_contacts(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings});
   warm_start(batches_, c.contacts, c.inertia, c.state);
 }
 

@@ -108,10 +108,12 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());
   const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
-  // The rotations of the bodies that do not move, found before the passes: contacts solved on
-  // different threads share them, and only read them then.
-  for (BodyId b = 0; b < s.angle.size(); ++b) {
-    if (!movable(inertia, b)) rotations.rotate(b, turn(b), Vec2::Zero());
+  // The rotations of the bodies in contact that do not move, found before the passes: contacts
+  // solved on different threads share them, and only read them then.
+  for (const Contact& c : contacts) {
+    for (const BodyId b : {c.body_a, c.body_b}) {
+      if (!movable(inertia, b)) rotations.rotate(b, turn(b), Vec2::Zero());
+    }
   }
   const auto turned_with = [&](BodyId b) {
     return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };

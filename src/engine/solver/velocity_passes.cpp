@@ -264,9 +264,10 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const Con
 namespace {
 
 template <typename Order>
-void prepare_in(const Order& order, ContactSet& contacts, const BodyShapes& shapes,
-                const BodyInertia& inertia, const MotionState& before, double h,
-                const Settings& settings) {
+void prepare_in(const Order& order, ContactSet& contacts, const ContactPreparation& in) {
+  const BodyShapes& shapes = in.shapes;
+  const BodyInertia& inertia = in.inertia;
+  const Settings& settings = in.settings;
   order.run([&](std::uint32_t i) {
     const Contact& c = contacts[i];
     const double restitution = contact_restitution(shapes, c);
@@ -277,8 +278,8 @@ void prepare_in(const Order& order, ContactSet& contacts, const BodyShapes& shap
       const Vec2 arm_b = gp::arm_b(c, p);
       p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
       p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
-      const double approach = contact_normal_velocity(before, c, p);
-      p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
+      const double approach = contact_normal_velocity(in.before, c, p);
+      p.target_normal_velocity = p.depth < 0.0 ? p.depth / in.h : 0.0;
       // A speculative point (still apart) bounces too if the solver ends up pushing on it:
       // apply_restitution acts only where the normal impulse is positive.
       p.bounce_velocity = approach < -settings.restitution_threshold ? restitution * approach : 0.0;
@@ -307,13 +308,12 @@ void warm_start_in(const Order& order, const ContactSet& contacts, const BodyIne
 
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
-  prepare_in(ContactsInOrder(contacts), contacts, shapes, inertia, before, h, settings);
+  prepare_in(ContactsInOrder(contacts), contacts, {shapes, inertia, before, h, settings});
 }
 
-void prepare_contacts(const ContactBatches& batches, ContactSet& contacts, const BodyShapes& shapes,
-                      const BodyInertia& inertia, const MotionState& before, double h,
-                      const Settings& settings) {
-  prepare_in(batches, contacts, shapes, inertia, before, h, settings);
+void prepare_contacts(const ContactBatches& batches, ContactSet& contacts,
+                      const ContactPreparation& preparation) {
+  prepare_in(batches, contacts, preparation);
 }
 
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {

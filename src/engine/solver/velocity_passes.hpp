@@ -56,10 +56,19 @@ bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
 /// normal block of each two-point contact.
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings);
+/// What prepare_contacts reads: the shapes, the inertias, the state before the step's forces
+/// and the step h [s].
+struct ContactPreparation {
+  const BodyShapes& shapes;
+  const BodyInertia& inertia;
+  const MotionState& before;
+  double h;
+  const Settings& settings;
+};
+
 /// prepare_contacts over `batches` of `contacts`, on the threads of the current task arena.
-void prepare_contacts(const ContactBatches& batches, ContactSet& contacts, const BodyShapes& shapes,
-                      const BodyInertia& inertia, const MotionState& before, double h,
-                      const Settings& settings);
+void prepare_contacts(const ContactBatches& batches, ContactSet& contacts,
+                      const ContactPreparation& preparation);
 
 /// Applies the carried-over impulses of every point to the velocities of `s`.
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
