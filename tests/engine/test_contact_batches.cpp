@@ -37,10 +37,20 @@ Graph chain(std::size_t n) {
   return Graph(n + 1, links);
 }
 
+// 0, 1, ..., n - 1: the contacts' own order.
+std::vector<std::uint32_t> in_order(std::size_t n) {
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  return order;
+}
+
+// Islands of more contacts than this are coloured in these tests.
+constexpr std::size_t kColouredAbove = 4096;
+
 // The contact indices in the order one thread visits them.
-std::vector<std::uint32_t> visits(const Graph& g) {
+std::vector<std::uint32_t> visits(const Graph& g, std::size_t coloured_above = kColouredAbove) {
   gp::ContactBatches batches;
-  batches.build(g.contacts, g.inertia);
+  batches.build(g.contacts, g.inertia, coloured_above);
   std::vector<std::uint32_t> order;
   tbb::task_arena(1).execute([&] {
     batches.run([&](std::uint32_t i) {
@@ -54,11 +64,13 @@ std::vector<std::uint32_t> visits(const Graph& g) {
 }  // namespace
 
 TEST_CASE("An island under the colouring threshold is visited in the contacts' own order") {
-  const Graph g = chain(gp::kColouredIslandContacts);
-  const std::vector<std::uint32_t> order = visits(g);
-  std::vector<std::uint32_t> expected(g.contacts.size());
-  for (std::uint32_t i = 0; i < expected.size(); ++i) expected[i] = i;
-  CHECK(order == expected);
+  const Graph g = chain(kColouredAbove);
+  CHECK(visits(g) == in_order(g.contacts.size()));
+}
+
+TEST_CASE("With colouring off, a large island is visited in the contacts' own order") {
+  const Graph g = chain(kColouredAbove + 10);
+  CHECK(visits(g, 0) == in_order(g.contacts.size()));
 }
 
 TEST_CASE("Islands joined only through a static body are separate, each in its own order") {
@@ -69,7 +81,7 @@ TEST_CASE("Islands joined only through a static body are separate, each in its o
 }
 
 TEST_CASE("A large island is visited colour after colour, no colour sharing a movable body") {
-  const std::size_t n = gp::kColouredIslandContacts + 10;
+  const std::size_t n = kColouredAbove + 10;
   const Graph g = chain(n);
   const std::vector<std::uint32_t> order = visits(g);
   // Greedy colouring of the chain in contact order: the ground contact 0 takes colour 0, then the
@@ -82,9 +94,9 @@ TEST_CASE("A large island is visited colour after colour, no colour sharing a mo
 }
 
 TEST_CASE("The passes' largest value is the same on any number of threads") {
-  const Graph g = chain(gp::kColouredIslandContacts + 100);
+  const Graph g = chain(kColouredAbove + 100);
   gp::ContactBatches batches;
-  batches.build(g.contacts, g.inertia);
+  batches.build(g.contacts, g.inertia, kColouredAbove);
   const auto value = [](std::uint32_t i) { return static_cast<double>((i * 7919U) % 10007U); };
   const double one = tbb::task_arena(1).execute([&] { return batches.run(value); });
   const double two = tbb::task_arena(2).execute([&] { return batches.run(value); });

@@ -13,14 +13,16 @@ constexpr std::size_t kColours = 64;
 
 }  // namespace
 
-void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inertia) {
+void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inertia,
+                           std::size_t coloured_above) {
   islands_.find(contacts, inertia);
   order_.clear();
   task_end_.clear();
   stage_end_.clear();
   const std::size_t bodies = inertia.inverse_mass.size();
-  const auto large = [this](std::size_t root) {
-    return islands_.island_end[root] - islands_.island_start[root] > kColouredIslandContacts;
+  const auto large = [this, coloured_above](std::size_t root) {
+    return coloured_above > 0 &&
+           islands_.island_end[root] - islands_.island_start[root] > coloured_above;
   };
   bool any_large = false;
   for (std::size_t r = 0; r < bodies; ++r) {

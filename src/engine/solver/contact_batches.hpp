@@ -1,10 +1,10 @@
 #pragma once
 // The order in which the contact passes visit a step's contacts, and which of them may be solved
 // side by side on several threads. Each island is solved on its own, in the contacts' order, as
-// one thread would; an island of more than kColouredIslandContacts contacts is graph-coloured
-// instead, so that its contacts are solved colour after colour, the contacts of a colour side by
-// side. The order depends on the contacts alone, never on the number of threads, so a step gives
-// the same result to the bit on any number of them.
+// one thread would; an island of more contacts than Settings::coloured_island_contacts (when
+// set) is graph-coloured instead, so that its contacts are solved colour after colour, the contacts
+// of a colour side by side. The order depends on the contacts alone, never on the number of
+// threads, so a step gives the same result to the bit on any number of them.
 
 #include <algorithm>
 #include <cstddef>
@@ -18,12 +18,6 @@
 #include "engine/threads.hpp"
 
 namespace gp {
-
-/// Contacts an island may have before it is coloured. A fixed setting, so that the order of the
-/// solver's arithmetic is the same on any number of threads: above the islands of every shipped
-/// scene, whose results colouring would change (rain1000's 1000 discs touch at most about 3000
-/// times), below large_pyramid's 10,000 contacts.
-inline constexpr std::size_t kColouredIslandContacts = 4096;
 
 /// The contacts in the order of a single thread, for the passes run outside the step's solver
 /// (impacts, speculative contacts) and by tests: ContactBatches' interface, one contact after
@@ -49,10 +43,11 @@ class ContactBatches {
   /// Contacts of a colour a thread takes at a time.
   static constexpr std::size_t kContactsPerChunk = 128;
 
-  /// Groups `contacts` into stages of tasks: the small islands first, one task each, then each
-  /// colour of the large islands, one task per contact. No two tasks of a stage share a body
-  /// that the solver moves. Reuses its arrays' room.
-  void build(const ContactSet& contacts, const BodyInertia& inertia);
+  /// Groups `contacts` into stages of tasks: the islands of at most `coloured_above` contacts
+  /// first (all of them when it is 0), one task each, then each colour of the larger islands, one
+  /// task per contact. No two tasks of a stage share a body that the solver moves. Reuses its
+  /// arrays' room.
+  void build(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
 
   /// The islands of the contacts build was given.
   const ContactIslands& islands() const { return islands_; }
