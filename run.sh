@@ -13,6 +13,13 @@ tests_status=0
 build/bin/gamephysics_tests -r junit -o build/test-results.xml > /dev/null || tests_status=$?
 verify_status=0
 build/bin/gamephysics verify --test-results build/test-results.xml "$@" || verify_status=$?
+# gcc and clang Release builds must give the same CSV to the byte on every shipped scene: a clang
+# build of the command line program in build-clang/ (tests/determinism/same_csv_gcc_clang.sh).
+compilers_status=0
+CC=clang CXX=clang++ cmake -S . -B build-clang -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build build-clang -j2 --target gamephysics_cli > /dev/null
+tests/determinism/same_csv_gcc_clang.sh build/bin/gamephysics build-clang/bin/gamephysics scenes \
+  build/compilers || compilers_status=$?
 # The figures of README.md and docs/ against this report (tests/docs/README.md); not after --quick
 # or --out, whose report is not the full one in out/report that they come from.
 figures_status=0
@@ -23,6 +30,10 @@ if [[ " $* " != *" --quick "* && " $* " != *" --out"* ]]; then
 fi
 if [ "$tests_status" -ne 0 ]; then
   echo "run.sh: unit tests failed (gamephysics_tests exit $tests_status; see build/test-results.xml)" >&2
+  exit 1
+fi
+if [ "$compilers_status" -ne 0 ]; then
+  echo "run.sh: gcc and clang builds gave different CSVs (build/compilers)" >&2
   exit 1
 fi
 if [ "$figures_status" -ne 0 ]; then

@@ -12,7 +12,7 @@ packages=(
   nlohmann-json3-dev   # all JSON: catalogue, scenes
   libcli11-dev         # the command line
   libboost-dev         # Boost.Units for the dimensional audit, Boost.Random's Sobol sequence
-  libtbb-dev           # the ensembles' samples on every core (verification/ensemble)
+  libtbb-dev           # the step on several threads (src/engine), the ensembles (verification/ensemble)
   libopenmpi-dev openmpi-bin  # the ensembles across processes and machines (optional at build)
   libchipmunk-dev libbox2d-dev libbenchmark-dev  # peer engines and benchmarks (verification/)
   python3-matplotlib   # the plots of the verify report (run with /usr/bin/python3)
@@ -20,7 +20,7 @@ packages=(
   python3-nbconvert python3-ipykernel  # the notebook test (docs/notebooks/)
   nodejs               # npm: KaTeX for the audit page, playwright-core (tools/install-web.sh)
   chromium             # headless browser of the browser tests (tests/browser/)
-  clang libclang-rt-14-dev  # the libFuzzer target of ./test.sh (verification/fuzz)
+  clang libclang-rt-14-dev  # ./test.sh's libFuzzer target; ./run.sh's gcc-vs-clang CSV check
 )
 
 missing=()

@@ -48,7 +48,9 @@ void bind_settings(py::module_& m) {
       .def_readwrite("sleep", &Settings::sleep, "islands at rest stop costing (off by default)")
       .def_readwrite("sleep_speed", &Settings::sleep_speed, "m/s")
       .def_readwrite("sleep_angular_speed", &Settings::sleep_angular_speed, "rad/s")
-      .def_readwrite("time_to_sleep", &Settings::time_to_sleep, "s");
+      .def_readwrite("time_to_sleep", &Settings::time_to_sleep, "s")
+      .def_readwrite("coloured_island_contacts", &Settings::coloured_island_contacts,
+                     "islands of more contacts are solved colour by colour (0: never)");
 }
 
 void bind_shapes(py::module_& m) {

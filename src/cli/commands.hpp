@@ -40,6 +40,10 @@ struct SimulateOptions {
   std::optional<std::filesystem::path> out;  ///< the trajectory CSV to write
   SceneOverrides overrides;
   bool explain = false;  ///< print the pipeline of a step
+  /// The step's contact passes and narrowphase run on this many threads (0: every core), with
+  /// the same result to the bit on any number. One by default: verification runs many
+  /// simulations side by side, and a run's time should not depend on the machine's cores.
+  int threads = 1;
 };
 
 /// `gamephysics simulate`: runs a scene file and writes its trajectory as CSV; with `explain`,

@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt_cleanup.hpp"
 #include "cli/partial_file.hpp"
+#include "cli/thread_limit.hpp"
 #include "scene/input_error.hpp"
 #include "scene/json_fields.hpp"
 #include "verification/ensemble/chunk_files.hpp"
@@ -180,11 +181,9 @@ int ensemble(const EnsembleOptions& options) {
   const std::string file = options.scene.string();
   std::string blamed = file;
   std::optional<Ensemble> e;
+  std::optional<tbb::global_control> threads;
   try {
-    if (options.threads < 0) {
-      throw InputError("--threads", "must be >= 0 (0: every core)",
-                       std::to_string(options.threads));
-    }
+    limit_threads(threads, options.threads);
     if (verification::ProcessGroup::launched() && !verification::ProcessGroup::built_with_mpi()) {
       throw InputError("(build)", "was built without MPI: run it without mpirun",
                        "GP_WITH_MPI=OFF");
@@ -193,11 +192,6 @@ int ensemble(const EnsembleOptions& options) {
   } catch (const std::exception& error) {  // InputError, or a sampler that cannot draw the inputs
     if (group.root()) std::cerr << "error: " << blamed << ": " << error.what() << "\n";
     return kBadInput;
-  }
-  std::optional<tbb::global_control> threads;
-  if (options.threads > 0) {
-    threads.emplace(tbb::global_control::max_allowed_parallelism,
-                    static_cast<std::size_t>(options.threads));
   }
   if (options.compare_numerical_error) {
     if (!group.root()) return 0;  // one process: the comparison uses the threads

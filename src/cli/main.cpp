@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
   simulate->add_option("--out", simulation.out, "Trajectory CSV to write");
   simulate->add_flag("--explain", simulation.explain,
                      "Print the pipeline of a step (runs nothing unless --out is given)");
+  simulate->add_option("--threads", simulation.threads,
+                       "Threads of a step (default: 1; 0: every core); the output is the same");
 
   gp::cli::OracleCommandOptions oracle_run;
   auto* oracle = app.add_subcommand(

@@ -2,9 +2,11 @@
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/partial_file.hpp"
+#include "cli/thread_limit.hpp"
 #include "engine/output/output_times.hpp"
 #include "engine/output/trajectory.hpp"
 #include "engine/scene/run.hpp"
@@ -45,7 +47,9 @@ int simulate(const SimulateOptions& options) {
   Scene scene;
   std::unique_ptr<Space> space;
   std::unique_ptr<PartialFile> out;
+  std::optional<tbb::global_control> threads;
   try {
+    limit_threads(threads, options.threads);
     scene = load_scene(options.scene, options.overrides);
     space = build_space(scene);
     if (options.explain) explain(file, scene, *space);

@@ -51,6 +51,11 @@ struct Settings {
   double sleep_speed = 0.01;           ///< m/s (Box2D 2.4's b2_linearSleepTolerance)
   double sleep_angular_speed = 0.035;  ///< rad/s (2°/s)
   double time_to_sleep = 0.5;          ///< s (Box2D's b2_timeToSleep)
+  /// Islands of more than this many contacts are solved colour by colour (a graph colouring: no
+  /// two contacts of a colour share a moving body), so that threads share one island; 0: never.
+  /// Off by default: in the colours' order a 100-row pyramid sways 1.4 m sideways in 500 steps,
+  /// against 0.29 m in the contacts' own order. The same on any number of threads either way.
+  int coloured_island_contacts = 0;
 };
 
 }  // namespace gp

@@ -114,6 +114,10 @@ void validate_settings(const Settings& settings) {
     throw InputError("max_impacts_per_step", "must be >= 0",
                      number_text(settings.max_impacts_per_step));
   }
+  if (settings.coloured_island_contacts < 0) {
+    throw InputError("coloured_island_contacts", "must be >= 0 (0: never)",
+                     number_text(settings.coloured_island_contacts));
+  }
 }
 
 void validate_step(double dt, const std::string& field) {

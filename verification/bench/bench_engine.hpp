@@ -23,6 +23,10 @@ inline constexpr std::array<Engine, 5> kEngines{Engine::Ours, Engine::ChipmunkDe
                                                 Engine::ChipmunkMatched, Engine::Box2dDefault,
                                                 Engine::Box2dMatched};
 
+/// Ours on two threads, run by gamephysics_bench beside the engines (ours and the peers on one):
+/// its row's ours/engine is the speed-up the second thread gives.
+inline constexpr std::string_view kOursTwoThreads = "ours-2-threads";
+
 /// "ours", "chipmunk-default", "chipmunk-matched", "box2d-default", "box2d-matched".
 std::string_view engine_label(Engine engine);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <exception>
 #include <string>
+#include <string_view>
 
 #include "verification/bench/bench_engine.hpp"
 #include "verification/bench/timed_run.hpp"
@@ -13,7 +14,7 @@ namespace gp::bench {
 
 namespace {
 
-void run_workload(benchmark::State& state, const Workload& w, Engine engine) {
+void run_workload(benchmark::State& state, const Workload& w, Engine engine, int threads) {
   double moved = 0.0;
   double heap = 0.0;
   try {
@@ -22,7 +23,7 @@ void run_workload(benchmark::State& state, const Workload& w, Engine engine) {
     const AroundSteps around{[&state] { state.ResumeTiming(); }, [&state] { state.PauseTiming(); }};
     for (auto _ : state) {
       state.PauseTiming();
-      const TimedRun run = time_run(w, engine, around);
+      const TimedRun run = time_run(w, engine, around, threads);
       state.ResumeTiming();
       state.SetIterationTime(run.seconds);
       moved = run.moved_m;
@@ -46,20 +47,24 @@ double largest(const std::vector<double>& v) {
   return *std::max_element(v.begin(), v.end());
 }
 
+void add(const Workload& w, Engine engine, std::string_view label, int threads) {
+  const std::string name = w.name + "/" + std::string(label);
+  benchmark::RegisterBenchmark(
+      name.c_str(),
+      [&w, engine, threads](benchmark::State& s) { run_workload(s, w, engine, threads); })
+      ->Iterations(1)
+      ->UseManualTime()
+      ->Unit(benchmark::kMillisecond)
+      ->ComputeStatistics("min", smallest)
+      ->ComputeStatistics("max", largest);
+}
+
 }  // namespace
 
 void register_benchmarks(const std::vector<Workload>& list) {
   for (const Workload& w : list) {
-    for (Engine engine : kEngines) {
-      const std::string name = w.name + "/" + std::string(engine_label(engine));
-      benchmark::RegisterBenchmark(
-          name.c_str(), [&w, engine](benchmark::State& s) { run_workload(s, w, engine); })
-          ->Iterations(1)
-          ->UseManualTime()
-          ->Unit(benchmark::kMillisecond)
-          ->ComputeStatistics("min", smallest)
-          ->ComputeStatistics("max", largest);
-    }
+    for (Engine engine : kEngines) add(w, engine, engine_label(engine), 1);
+    add(w, Engine::Ours, kOursTwoThreads, 2);
   }
 }
 

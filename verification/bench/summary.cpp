@@ -43,8 +43,10 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
   }
   std::vector<Figures> all;
   for (const Workload& w : list) {
-    for (Engine engine : kEngines) {
-      const std::string label(engine_label(engine));
+    std::vector<std::string> labels;
+    for (Engine engine : kEngines) labels.emplace_back(engine_label(engine));
+    labels.emplace_back(kOursTwoThreads);
+    for (const std::string& label : labels) {
       const auto found = by_name.find(w.name + "/" + label);
       if (found == by_name.end()) continue;
       const Measured& m = found->second;
@@ -69,8 +71,8 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
 
 void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   out << "\nSummary: wall time of one whole run [ms]; ours/engine = our median / the engine's "
-         "(above 1: ours is slower); heap the engine holds at the end of a run [KiB], and per "
-         "body [B]\n";
+         "(above 1: ours is slower; on the rows ours-2-threads, the speed-up of a second thread); "
+         "heap the engine holds at the end of a run [KiB], and per body [B]\n";
   char line[200];
   std::snprintf(line, sizeof line, "%-20s %-16s %4s %10s %10s %10s %9s %11s %14s %10s %9s\n",
                 "workload", "engine", "reps", "median", "min", "max", "stddev", "ours/engine",

@@ -4,6 +4,8 @@
 
 #include <chrono>
 
+#include <tbb/task_arena.h>
+
 namespace gp::bench {
 
 namespace {
@@ -16,9 +18,8 @@ double heap_in_use() {
   return static_cast<double>(heap.uordblks + heap.hblkhd);
 }
 
-}  // namespace
-
-TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around) {
+// time_run on the threads of the current task arena.
+TimedRun time_run_here(const Workload& w, Engine engine, const AroundSteps& around) {
   const double heap_before = heap_in_use();
   EngineRun run(engine, w.scene);
   const Vec2 start = w.watched ? run.state(*w.watched).position : Vec2::Zero();
@@ -32,6 +33,13 @@ TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around) {
   if (w.watched) timed.moved_m = (run.state(*w.watched).position - start).norm();
   timed.heap_bytes = heap_in_use() - heap_before;
   return timed;
+}
+
+}  // namespace
+
+TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around, int threads) {
+  tbb::task_arena arena(threads);
+  return arena.execute([&] { return time_run_here(w, engine, around); });
 }
 
 }  // namespace gp::bench

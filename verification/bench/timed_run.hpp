@@ -27,8 +27,9 @@ struct AroundSteps {
 };
 
 /// Sets `w` up in `engine`, steps it `w.steps` times by w.scene.dt, times the steps and measures
-/// the heap the engine then holds. Throws what the engine throws (NumericalError when a state
-/// becomes non-finite).
-TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around = {});
+/// the heap the engine then holds. Ours runs on `threads` threads (the peers on one). Throws what
+/// the engine throws (NumericalError when a state becomes non-finite).
+TimedRun time_run(const Workload& w, Engine engine, const AroundSteps& around = {},
+                  int threads = 1);
 
 }  // namespace gp::bench

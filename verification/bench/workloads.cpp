@@ -107,6 +107,7 @@ std::vector<Workload> box2d_workloads(const std::filesystem::path& bench_scenes_
     list.push_back({name, std::move(scene), steps, top});
   };
   watched("large_pyramid", 500);
+  watched("large_pyramid_coloured", 500);
   if (!quick) watched("many_pyramids", 200);
   list.push_back({"tumbler", load_scene(bench_scenes_dir / "tumbler.json"), 750, std::nullopt});
   return list;

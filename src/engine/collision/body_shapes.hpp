@@ -8,10 +8,14 @@
 #include <variant>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "engine/dynamics/force_model.hpp"
 #include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
 #include "engine/geometry/world_shapes.hpp"
+#include "engine/threads.hpp"
 #include "scene/body.hpp"
 
 namespace gp {
@@ -79,12 +83,23 @@ template <typename Pose>
 void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
   const bool first = world.size() != records_.size();
   if (first) world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
-  for (std::size_t i = 0; i < records_.size(); ++i) {
-    const ShapeRecord& r = records_[i];
-    if (!r.moves && !first) continue;
-    const auto [position, angle] = pose(r.body);
-    world.place(i, r.local, r.centred_disc() ? Transform(position) : Transform(position, angle));
+  const auto place_shapes = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const ShapeRecord& r = records_[i];
+      if (!r.moves && !first) continue;
+      const auto [position, angle] = pose(r.body);
+      world.place(i, r.local, r.centred_disc() ? Transform(position) : Transform(position, angle));
+    }
+  };
+  // Once placed, each shape has its own room in `world`: the shapes are placed side by side.
+  if (first || one_thread()) {
+    place_shapes(0, records_.size());
+    return;
   }
+  constexpr std::size_t kShapesPerTask = 1024;  // a shape costs tens of nanoseconds
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, records_.size(), kShapesPerTask),
+      [&](const tbb::blocked_range<std::size_t>& r) { place_shapes(r.begin(), r.end()); });
 }
 
 }  // namespace gp

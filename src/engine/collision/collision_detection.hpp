@@ -34,7 +34,7 @@ class CollisionDetection {
   /// The context's contacts: those of its candidate pairs at the start placement and state,
   /// sorted by key; a point whose pair and features were among the warm starts (sorted by key)
   /// starts with their impulses times the warm-start scale.
-  void find_contacts(StepContext& ctx) const;
+  void find_contacts(StepContext& ctx);
 
   double margin() const { return margin_; }
 
@@ -42,8 +42,9 @@ class CollisionDetection {
   double margin_;
   SweepAndPrune broadphase_;
   PairOrder pair_order_;
-  std::vector<BodyId> body_of_;   // per shape
-  std::vector<ShapePair> pairs_;  // the broadphase's, filtered and sorted in place
+  std::vector<BodyId> body_of_;             // per shape
+  std::vector<ShapePair> pairs_;            // the broadphase's, filtered and sorted in place
+  std::vector<ContactManifold> manifolds_;  // per pair of find_contacts
 };
 
 }  // namespace gp

@@ -14,26 +14,29 @@ PositionLimits position_limits(const Settings& s) {
 }  // namespace
 
 void ContactSolver::prepare(StepContext& c) {
-  prepare_contacts(c.contacts, c.shapes, c.inertia, c.start, c.h, c.settings);
-  warm_start(c.contacts, c.inertia, c.state);
+  batches_.build(c.contacts, c.inertia,
+                 static_cast<std::size_t>(c.settings.coloured_island_contacts));
+  prepare_contacts(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings});
+  warm_start(batches_, c.contacts, c.inertia, c.state);
 }
 
 void ContactSolver::solve_small_islands(StepContext& c) {
-  gp::solve_small_islands(c.contacts, c.inertia, c.settings.direct_solve_points, c.state, islands_);
+  gp::solve_small_islands(c.contacts, batches_.islands(), c.inertia, c.settings.direct_solve_points,
+                          c.state, islands_);
 }
 
 void ContactSolver::solve_velocities(StepContext& c) {
-  gp::solve_velocities(c.contacts, c.inertia, c.settings.velocity_iterations,
-                       c.settings.velocity_tolerance, c.state);
+  gp::solve_velocities(batches_, c.contacts, c.inertia,
+                       {c.settings.velocity_iterations, c.settings.velocity_tolerance}, c.state);
 }
 
 void ContactSolver::apply_restitution(StepContext& c) {
-  gp::apply_restitution(c.contacts, c.inertia, c.state);
+  gp::apply_restitution(batches_, c.contacts, c.inertia, c.state);
 }
 
 void ContactSolver::move_by_impulses(StepContext& c) {
-  move_by_contact_impulses(c.contacts, c.inertia, c.integrator->impulse_position_share() * c.h,
-                           c.state);
+  move_by_contact_impulses(batches_, c.contacts, c.inertia,
+                           c.integrator->impulse_position_share() * c.h, c.state);
 }
 
 void ContactSolver::solve_speculative(StepContext& c) {
@@ -44,8 +47,8 @@ void ContactSolver::solve_speculative(StepContext& c) {
 }
 
 void ContactSolver::correct_positions(StepContext& c) {
-  positions_.correct(c.contacts, c.shapes, c.inertia, c.start.angle, position_limits(c.settings),
-                     c.state);
+  positions_.correct(batches_, c.contacts, {c.shapes, c.inertia, c.start.angle},
+                     position_limits(c.settings), c.state);
 }
 
 }  // namespace gp

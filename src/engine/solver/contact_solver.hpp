@@ -2,8 +2,10 @@
 // The contact solver's stages over a sub-step, on the step context: effective masses and warm
 // start, the direct solve of small islands, the sequential-impulse passes, the bounce, the
 // displacement of the impulses, the impacts handed over as speculative contacts, and the position
-// passes. It owns their scratch, so that a warmed-up step allocates nothing.
+// passes. It owns their scratch, so that a warmed-up step allocates nothing, and the order of
+// the contacts' passes (ContactBatches), which run on the threads of the current task arena.
 
+#include "engine/solver/contact_batches.hpp"
 #include "engine/solver/island_solver.hpp"
 #include "engine/solver/position_passes.hpp"
 #include "engine/solver/speculative.hpp"
@@ -32,6 +34,7 @@ class ContactSolver {
   void correct_positions(StepContext& c);
 
  private:
+  ContactBatches batches_;  ///< of the sub-step's contacts, found in prepare
   IslandScratch islands_;
   SpeculativeScratch speculative_;
   PositionCorrection positions_;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include "engine/solver/contact_islands.hpp"
 #include "engine/solver/normal_lcp.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
@@ -18,12 +19,6 @@ namespace gp {
 /// Scratch for solve_small_islands, kept by the caller so that a step does not allocate once it
 /// has grown to the scene.
 struct IslandScratch {
-  std::vector<BodyId> parent;  // per body: union-find forest of the islands
-  // 32-bit counts and indices: these arrays are per body and per contact.
-  std::vector<std::uint32_t> points;        // per island root: its number of points
-  std::vector<std::uint32_t> order;         // contact indices, grouped by island
-  std::vector<std::uint32_t> island_start;  // per island root: its first entry in `order`
-  std::vector<std::uint32_t> cursor;        // per island root: filling `order`
   struct Row {
     std::uint32_t contact;
     std::uint32_t point;
@@ -36,8 +31,8 @@ struct IslandScratch {
   NormalLcpScratch lcp;
 };
 
-/// For each island (contacts joined through the dynamic bodies they share) of at most
-/// `max_points` contact points, sets the points' normal impulses λ to the solution of
+/// For each of the `islands` of `contacts` (contacts joined through the dynamic bodies they share)
+/// of at most `max_points` contact points, sets the points' normal impulses λ to the solution of
 ///   w = w₀ + K (λ − λ₀) ≥ 0,  λ ≥ 0,  λ · w = 0
 /// where w is each point's normal velocity less its target, w₀ and λ₀ the current ones, and K
 /// the effective-mass matrix of the points (GD:impulse's denominators on its diagonal), with the
@@ -46,7 +41,8 @@ struct IslandScratch {
 /// pushing set not positive definite) keeps its impulses for the sequential passes. Applies the
 /// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). Returns the
 /// number of islands solved.
-int solve_small_islands(ContactSet& contacts, const BodyInertia& inertia, std::size_t max_points,
-                        MotionState& s, IslandScratch& scratch);
+int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
+                        const BodyInertia& inertia, std::size_t max_points, MotionState& s,
+                        IslandScratch& scratch);
 
 }  // namespace gp

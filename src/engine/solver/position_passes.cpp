@@ -24,10 +24,16 @@ Turns displace(const BodyInertia& m, const Contact& c, const Vec2& shift, double
                double moment_b, MotionState& s) {
   const Vec2 back = tm::reaction_force(shift);
   const Turns turns{moment_a * m.inverse_moment[c.body_a], moment_b * m.inverse_moment[c.body_b]};
-  s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
-  s.angle[c.body_a] = dd::rotated_orientation(s.angle[c.body_a], turns.a);
-  s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
-  s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b], turns.b);
+  // Only movable bodies are written: a static or kinematic body may be in contacts solved on
+  // other threads at the same time, and does not move.
+  if (movable(m, c.body_a)) {
+    s.position[c.body_a] += dd::velocity_change_from_impulse(shift, m.inverse_mass[c.body_a]);
+    s.angle[c.body_a] = dd::rotated_orientation(s.angle[c.body_a], turns.a);
+  }
+  if (movable(m, c.body_b)) {
+    s.position[c.body_b] += dd::velocity_change_from_impulse(back, m.inverse_mass[c.body_b]);
+    s.angle[c.body_b] = dd::rotated_orientation(s.angle[c.body_b], turns.b);
+  }
   return turns;
 }
 
@@ -48,6 +54,14 @@ void move_by_contact_impulse(const ContactSet& contacts, const Contact& c,
 void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s) {
   for (const Contact& c : contacts) move_by_contact_impulse(contacts, c, inertia, duration, s);
+}
+
+void move_by_contact_impulses(const ContactBatches& batches, const ContactSet& contacts,
+                              const BodyInertia& inertia, double duration, MotionState& s) {
+  batches.run([&](std::uint32_t i) {
+    move_by_contact_impulse(contacts, contacts[i], inertia, duration, s);
+    return 0.0;
+  });
 }
 
 void RotationCache::reset(std::size_t bodies) {
@@ -80,9 +94,13 @@ Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, c
 
 }  // namespace
 
-void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& shapes,
-                                 const BodyInertia& inertia, std::span<const double> detected_angle,
-                                 const PositionLimits& limits, MotionState& s) {
+template <typename Order>
+void PositionCorrection::correct_in(const Order& order, const ContactSet& contacts,
+                                    const ContactGeometry& geometry, const PositionLimits& limits,
+                                    MotionState& s) {
+  const BodyShapes& shapes = geometry.shapes;
+  const BodyInertia& inertia = geometry.inertia;
+  const std::span<const double> detected_angle = geometry.detected_angle;
   RotationCache& rotations = rotations_;
   const double slop = limits.slop;
   int iterations = limits.iterations;
@@ -90,14 +108,22 @@ void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& s
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());
   const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
+  // The rotations of the bodies in contact that do not move, found before the passes: contacts
+  // solved on different threads share them, and only read them then.
+  for (const Contact& c : contacts) {
+    for (const BodyId b : {c.body_a, c.body_b}) {
+      if (!movable(inertia, b)) rotations.rotate(b, turn(b), Vec2::Zero());
+    }
+  }
   const auto turned_with = [&](BodyId b) {
     return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
   };
   // Passes end after one that found no point overlapping by more than two slops: what is left
   // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
   for (bool deep = true; deep && iterations-- > 0;) {
-    deep = false;
-    for (const Contact& c : contacts) {
+    deep = 0.0 != order.run([&](std::uint32_t i) {
+      const Contact& c = contacts[i];
+      bool contact_deep = false;
       for (const ContactPointState& p : contacts.points(c)) {
         // Each body's deepest point inside the other at detection, half the depth from the
         // contact point.
@@ -114,7 +140,7 @@ void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& s
             (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
         const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
         if (excess == 0.0) continue;
-        deep = deep || separation < -2.0 * slop;
+        contact_deep = contact_deep || separation < -2.0 * slop;
         // The impulses' effective mass, applied to a displacement instead of a velocity; set up
         // for the step's arms, which the small turns of these passes barely change.
         const Vec2 shift = -excess * p.normal_mass * c.normal;
@@ -128,8 +154,21 @@ void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& s
         rotations.turn(c.body_a, turn(c.body_a), turns.a);
         rotations.turn(c.body_b, turn(c.body_b), turns.b);
       }
-    }
+      return contact_deep ? 1.0 : 0.0;
+    });
   }
+}
+
+void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& shapes,
+                                 const BodyInertia& inertia, std::span<const double> detected_angle,
+                                 const PositionLimits& limits, MotionState& s) {
+  correct_in(ContactsInOrder(contacts), contacts, {shapes, inertia, detected_angle}, limits, s);
+}
+
+void PositionCorrection::correct(const ContactBatches& batches, const ContactSet& contacts,
+                                 const ContactGeometry& geometry, const PositionLimits& limits,
+                                 MotionState& s) {
+  correct_in(batches, contacts, geometry, limits, s);
 }
 
 }  // namespace gp

@@ -10,6 +10,7 @@
 #include "engine/collision/body_shapes.hpp"
 #include "engine/core.hpp"
 #include "engine/geometry/transform.hpp"
+#include "engine/solver/contact_batches.hpp"
 #include "engine/solver/contact_set.hpp"
 
 namespace gp {
@@ -20,6 +21,11 @@ namespace gp {
 /// displacement back.
 void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s);
+
+/// move_by_contact_impulses in the order of `batches` of `contacts`, on the threads of the current
+/// task arena.
+void move_by_contact_impulses(const ContactBatches& batches, const ContactSet& contacts,
+                              const BodyInertia& inertia, double duration, MotionState& s);
 
 /// move_by_contact_impulses for contact `c` of `contacts` alone.
 void move_by_contact_impulse(const ContactSet& contacts, const Contact& c,
@@ -66,6 +72,14 @@ struct PositionLimits {
   double slop;
 };
 
+/// What the position passes read of the bodies: their shapes, inertias, and angles [rad, by body
+/// id] when the contacts were found.
+struct ContactGeometry {
+  const BodyShapes& shapes;
+  const BodyInertia& inertia;
+  std::span<const double> detected_angle;
+};
+
 /// The position passes, with the rotations they turn bodies by kept between steps so that a step
 /// does not allocate.
 class PositionCorrection {
@@ -79,8 +93,16 @@ class PositionCorrection {
   void correct(const ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                std::span<const double> detected_angle, const PositionLimits& limits,
                MotionState& s);
+  /// correct in the order of `batches` of `contacts`, on the threads of the current task arena;
+  /// the same result on any number of them.
+  void correct(const ContactBatches& batches, const ContactSet& contacts,
+               const ContactGeometry& geometry, const PositionLimits& limits, MotionState& s);
 
  private:
+  template <typename Order>
+  void correct_in(const Order& order, const ContactSet& contacts, const ContactGeometry& geometry,
+                  const PositionLimits& limits, MotionState& s);
+
   RotationCache rotations_;
 };
 

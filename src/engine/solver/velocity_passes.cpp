@@ -49,11 +49,17 @@ struct PairMotion {
         inverse_moment_a(m.inverse_moment[c.body_a]),
         inverse_moment_b(m.inverse_moment[c.body_b]) {}
 
+  // Only movable bodies are written: a static or kinematic body may be in contacts solved on
+  // other threads at the same time, and its motion does not change.
   void store(const Contact& c, MotionState& s) const {
-    s.velocity[c.body_a] = velocity_a;
-    s.angular_velocity[c.body_a] = angular_velocity_a;
-    s.velocity[c.body_b] = velocity_b;
-    s.angular_velocity[c.body_b] = angular_velocity_b;
+    if (inverse_mass_a != 0.0 || inverse_moment_a != 0.0) {
+      s.velocity[c.body_a] = velocity_a;
+      s.angular_velocity[c.body_a] = angular_velocity_a;
+    }
+    if (inverse_mass_b != 0.0 || inverse_moment_b != 0.0) {
+      s.velocity[c.body_b] = velocity_b;
+      s.angular_velocity[c.body_b] = angular_velocity_b;
+    }
   }
 
   double velocity_along(const Vec2& d, double arm_a, double arm_b) const {
@@ -255,9 +261,15 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const Con
 
 }  // namespace
 
-void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
-                      const MotionState& before, double h, const Settings& settings) {
-  for (const Contact& c : contacts) {
+namespace {
+
+template <typename Order>
+void prepare_in(const Order& order, ContactSet& contacts, const ContactPreparation& in) {
+  const BodyShapes& shapes = in.shapes;
+  const BodyInertia& inertia = in.inertia;
+  const Settings& settings = in.settings;
+  order.run([&](std::uint32_t i) {
+    const Contact& c = contacts[i];
     const double restitution = contact_restitution(shapes, c);
     const Vec2 tangent = contact_tangent(c.normal);
     const std::span<ContactPointState> points = contacts.points(c);
@@ -266,25 +278,51 @@ void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const Body
       const Vec2 arm_b = gp::arm_b(c, p);
       p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
       p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
-      const double approach = contact_normal_velocity(before, c, p);
-      p.target_normal_velocity = p.depth < 0.0 ? p.depth / h : 0.0;
+      const double approach = contact_normal_velocity(in.before, c, p);
+      p.target_normal_velocity = p.depth < 0.0 ? p.depth / in.h : 0.0;
       // A speculative point (still apart) bounces too if the solver ends up pushing on it:
       // apply_restitution acts only where the normal impulse is positive.
       p.bounce_velocity = approach < -settings.restitution_threshold ? restitution * approach : 0.0;
     }
     if (c.count() == 2) contacts.set_block(c, normal_block(inertia, c, points[0], points[1]));
-  }
+    return 0.0;
+  });
 }
 
-void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
-  for (const Contact& c : contacts) {
+template <typename Order>
+void warm_start_in(const Order& order, const ContactSet& contacts, const BodyInertia& inertia,
+                   MotionState& s) {
+  order.run([&](std::uint32_t i) {
+    const Contact& c = contacts[i];
     PairMotion m(c, inertia, s);
     for (const ContactPointState& p : contacts.points(c)) {
       m.push_normal(c, p, p.normal_impulse);
       m.push_tangent(contact_tangent(c.normal), p, p.tangent_impulse);
     }
     m.store(c, s);
-  }
+    return 0.0;
+  });
+}
+
+}  // namespace
+
+void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
+                      const MotionState& before, double h, const Settings& settings) {
+  prepare_in(ContactsInOrder(contacts), contacts, {shapes, inertia, before, h, settings});
+}
+
+void prepare_contacts(const ContactBatches& batches, ContactSet& contacts,
+                      const ContactPreparation& preparation) {
+  prepare_in(batches, contacts, preparation);
+}
+
+void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
+  warm_start_in(ContactsInOrder(contacts), contacts, inertia, s);
+}
+
+void warm_start(const ContactBatches& batches, const ContactSet& contacts,
+                const BodyInertia& inertia, MotionState& s) {
+  warm_start_in(batches, contacts, inertia, s);
 }
 
 namespace {
@@ -309,12 +347,14 @@ double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyIner
   return solve_once(contacts, c, inertia, s);
 }
 
-int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
-                     double tolerance, MotionState& s) {
+namespace {
+
+template <typename Order>
+int solve_velocities_in(const Order& order, ContactSet& contacts, const BodyInertia& inertia,
+                        int iterations, double tolerance, MotionState& s) {
   for (int i = 0; i < iterations;) {
-    double largest_change = 0.0;
-    for (const Contact& c : contacts)
-      largest_change = std::max(largest_change, solve_once(contacts, c, inertia, s));
+    const double largest_change =
+        order.run([&](std::uint32_t k) { return solve_once(contacts, contacts[k], inertia, s); });
     ++i;
     // A pass that changed the velocities by at most the tolerance leaves the next about as
     // little to do (none at all when it changed nothing).
@@ -323,12 +363,15 @@ int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int itera
   return iterations;
 }
 
-void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
-  for (const Contact& c : contacts) {
+template <typename Order>
+void apply_restitution_in(const Order& order, ContactSet& contacts, const BodyInertia& inertia,
+                          MotionState& s) {
+  order.run([&](std::uint32_t i) {
+    const Contact& c = contacts[i];
     const std::span<ContactPointState> points = contacts.points(c);
     if (std::all_of(points.begin(), points.end(),
                     [](const ContactPointState& p) { return p.bounce_velocity == 0.0; })) {
-      continue;
+      return 0.0;
     }
     PairMotion m(c, inertia, s);
     for (ContactPointState& p : points) {
@@ -339,7 +382,30 @@ void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionS
       p.normal_impulse = total;
     }
     m.store(c, s);
-  }
+    return 0.0;
+  });
+}
+
+}  // namespace
+
+int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
+                     double tolerance, MotionState& s) {
+  return solve_velocities_in(ContactsInOrder(contacts), contacts, inertia, iterations, tolerance,
+                             s);
+}
+
+int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
+                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s) {
+  return solve_velocities_in(batches, contacts, inertia, limits.iterations, limits.tolerance, s);
+}
+
+void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
+  apply_restitution_in(ContactsInOrder(contacts), contacts, inertia, s);
+}
+
+void apply_restitution(const ContactBatches& batches, ContactSet& contacts,
+                       const BodyInertia& inertia, MotionState& s) {
+  apply_restitution_in(batches, contacts, inertia, s);
 }
 
 }  // namespace gp

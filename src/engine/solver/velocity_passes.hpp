@@ -10,6 +10,7 @@
 
 #include "engine/collision/body_shapes.hpp"
 #include "engine/core.hpp"
+#include "engine/solver/contact_batches.hpp"
 #include "engine/solver/contact_set.hpp"
 #include "scene/settings.hpp"
 
@@ -55,9 +56,25 @@ bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
 /// normal block of each two-point contact.
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings);
+/// What prepare_contacts reads: the shapes, the inertias, the state before the step's forces
+/// and the step h [s].
+struct ContactPreparation {
+  const BodyShapes& shapes;
+  const BodyInertia& inertia;
+  const MotionState& before;
+  double h;
+  const Settings& settings;
+};
+
+/// prepare_contacts over `batches` of `contacts`, on the threads of the current task arena.
+void prepare_contacts(const ContactBatches& batches, ContactSet& contacts,
+                      const ContactPreparation& preparation);
 
 /// Applies the carried-over impulses of every point to the velocities of `s`.
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
+/// warm_start in the order of `batches` of `contacts`, on the threads of the current task arena.
+void warm_start(const ContactBatches& batches, const ContactSet& contacts,
+                const BodyInertia& inertia, MotionState& s);
 
 /// At most `iterations` passes of sequential impulses over the points' friction and normal
 /// constraints (no bounce: restitution comes after, in apply_restitution), ending after the
@@ -65,6 +82,18 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
 /// `tolerance` [m/s] (0: only a pass that changed nothing ends them). Returns the passes made.
 int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s);
+
+/// How far the velocity passes go: at most `iterations` passes, ending after one that changed no
+/// velocity by more than `tolerance` [m/s].
+struct VelocityLimits {
+  int iterations;
+  double tolerance;
+};
+
+/// solve_velocities in the order of `batches` of `contacts`, on the threads of the current task
+/// arena; the same result on any number of them.
+int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
+                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s);
 
 /// One pass of sequential impulses over contact `c` of `contacts`, friction then normal, on the
 /// velocities of `s`; returns the largest change it made to its two bodies' velocities [m/s].
@@ -76,5 +105,9 @@ double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyIner
 /// a target inside them: simultaneous targets make a body pinned between two contacts (a disc
 /// struck against a wall) bounce off both at once, which creates energy.
 void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s);
+/// apply_restitution in the order of `batches` of `contacts`, on the threads of the current task
+/// arena.
+void apply_restitution(const ContactBatches& batches, ContactSet& contacts,
+                       const BodyInertia& inertia, MotionState& s);
 
 }  // namespace gp

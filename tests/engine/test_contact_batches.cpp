@@ -1,0 +1,107 @@
+// The order of the contact passes (ContactBatches): every contact once, islands in the contacts'
+// order, large islands by colour, against orders worked out by hand for chains of bodies.
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include "engine/solver/contact_batches.hpp"
+
+namespace {
+
+// `bodies` unit bodies, body 0 static, and one single-point contact per pair of `links`.
+struct Graph {
+  gp::BodyInertia inertia;
+  gp::ContactSet contacts;
+
+  Graph(std::size_t bodies, const std::vector<std::pair<gp::BodyId, gp::BodyId>>& links) {
+    inertia.inverse_mass.assign(bodies, 1.0);
+    inertia.inverse_moment.assign(bodies, 6.0);
+    inertia.inverse_mass[0] = inertia.inverse_moment[0] = 0.0;
+    for (const auto& [a, b] : links) {
+      gp::Contact& c = contacts.append(1);
+      c.body_a = a;
+      c.body_b = b;
+    }
+  }
+};
+
+// A chain 1 - 2 - ... - n of movable bodies, each also resting on the static body 0, contact
+// i + 1 joining bodies i + 1 and i + 2 after the ground contact of body 1.
+Graph chain(std::size_t n) {
+  std::vector<std::pair<gp::BodyId, gp::BodyId>> links{{1, 0}};
+  for (gp::BodyId b = 1; b < n; ++b) links.emplace_back(b, b + 1);
+  return Graph(n + 1, links);
+}
+
+// 0, 1, ..., n - 1: the contacts' own order.
+std::vector<std::uint32_t> in_order(std::size_t n) {
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  return order;
+}
+
+// Islands of more contacts than this are coloured in these tests.
+constexpr std::size_t kColouredAbove = 4096;
+
+// The contact indices in the order one thread visits them.
+std::vector<std::uint32_t> visits(const Graph& g, std::size_t coloured_above = kColouredAbove) {
+  gp::ContactBatches batches;
+  batches.build(g.contacts, g.inertia, coloured_above);
+  std::vector<std::uint32_t> order;
+  tbb::task_arena(1).execute([&] {
+    batches.run([&](std::uint32_t i) {
+      order.push_back(i);
+      return 0.0;
+    });
+  });
+  return order;
+}
+
+}  // namespace
+
+TEST_CASE("An island under the colouring threshold is visited in the contacts' own order") {
+  const Graph g = chain(kColouredAbove);
+  CHECK(visits(g) == in_order(g.contacts.size()));
+}
+
+TEST_CASE("With colouring off, a large island is visited in the contacts' own order") {
+  const Graph g = chain(kColouredAbove + 10);
+  CHECK(visits(g, 0) == in_order(g.contacts.size()));
+}
+
+TEST_CASE("Islands joined only through a static body are separate, each in its own order") {
+  // Bodies 1..4 each on the ground, and 1 - 2 and 3 - 4 linked: islands {1, 2} and {3, 4}, each
+  // island's contacts in their order, the island of the lower root first.
+  const Graph g(5, {{3, 0}, {1, 0}, {3, 4}, {2, 1}, {4, 0}, {2, 0}});
+  CHECK(visits(g) == std::vector<std::uint32_t>{1, 3, 5, 0, 2, 4});
+}
+
+TEST_CASE("A large island is visited colour after colour, no colour sharing a movable body") {
+  const std::size_t n = kColouredAbove + 10;
+  const Graph g = chain(n);
+  const std::vector<std::uint32_t> order = visits(g);
+  // Greedy colouring of the chain in contact order: the ground contact 0 takes colour 0, then the
+  // links alternate 1, 0, 1, ... (link i shares body i with link i - 1, and link 1 shares body 1
+  // with the ground contact). Colour 0 is contact 0 and the even links, colour 1 the odd ones.
+  std::vector<std::uint32_t> expected{0};
+  for (std::uint32_t i = 2; i < g.contacts.size(); i += 2) expected.push_back(i);
+  for (std::uint32_t i = 1; i < g.contacts.size(); i += 2) expected.push_back(i);
+  CHECK(order == expected);
+}
+
+TEST_CASE("The passes' largest value is the same on any number of threads") {
+  const Graph g = chain(kColouredAbove + 100);
+  gp::ContactBatches batches;
+  batches.build(g.contacts, g.inertia, kColouredAbove);
+  const auto value = [](std::uint32_t i) { return static_cast<double>((i * 7919U) % 10007U); };
+  const double one = tbb::task_arena(1).execute([&] { return batches.run(value); });
+  const double two = tbb::task_arena(2).execute([&] { return batches.run(value); });
+  double largest = 0.0;
+  for (std::uint32_t i = 0; i < g.contacts.size(); ++i) largest = std::max(largest, value(i));
+  CHECK(one == largest);
+  CHECK(two == largest);
+}
