@@ -44,7 +44,7 @@ class CollisionDetection {
   PairOrder pair_order_;
   std::vector<BodyId> body_of_;             // per shape
   std::vector<ShapePair> pairs_;            // the broadphase's, filtered and sorted in place
-  std::vector<ContactManifold> manifolds_;  // per pair of find_contacts
+  std::vector<ContactManifold> manifolds_;  // per pair of a block of find_contacts
 };
 
 }  // namespace gp
