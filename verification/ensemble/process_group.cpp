@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <list>
 #include <thread>
 
 #ifdef GP_WITH_MPI
@@ -29,35 +30,64 @@ void wait_for(MPI_Request& request) {
   }
 }
 
-// Rank 0's receipt of one chunk from any rank, if one has arrived (or, with `wait`, once one
-// has): its index in 8 bytes, then its text.
-bool receive_chunk(const std::function<void(std::uint64_t, const std::string&)>& store, bool wait) {
-  MPI_Status status;
-  for (int arrived = 0; !arrived; nap()) {
-    MPI_Iprobe(MPI_ANY_SOURCE, kChunkTag, MPI_COMM_WORLD, &arrived, &status);
-    if (!arrived && !wait) return false;
-  }
-  int bytes = 0;
-  MPI_Get_count(&status, MPI_CHAR, &bytes);
-  std::string message(static_cast<std::size_t>(bytes), '\0');
-  MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kChunkTag, MPI_COMM_WORLD,
-           MPI_STATUS_IGNORE);
-  std::uint64_t chunk = 0;
-  for (int b = 0; b < 8; ++b) {
-    chunk |= std::uint64_t(static_cast<unsigned char>(message[b])) << 8 * b;
-  }
-  store(chunk, message.substr(8));
-  return true;
+// A chunk in transit: its index in 8 bytes, then its text. Kept in a std::list so that the buffer
+// stays put until its request completes.
+struct Message {
+  std::string bytes;
+  MPI_Request request = MPI_REQUEST_NULL;
+};
+
+std::string encode(std::uint64_t chunk, const std::string& text) {
+  std::string bytes(8, '\0');
+  for (int b = 0; b < 8; ++b) bytes[b] = static_cast<char>((chunk >> 8 * b) & 0xff);
+  return bytes + text;
 }
 
-void send_chunk(std::uint64_t chunk, const std::string& text) {
-  std::string message(8, '\0');
-  for (int b = 0; b < 8; ++b) message[b] = static_cast<char>((chunk >> 8 * b) & 0xff);
-  message += text;
-  MPI_Request request;
-  MPI_Isend(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kChunkTag,
-            MPI_COMM_WORLD, &request);
-  wait_for(request);
+std::uint64_t decoded_chunk(const std::string& bytes) {
+  std::uint64_t chunk = 0;
+  for (int b = 0; b < 8; ++b) {
+    chunk |= std::uint64_t(static_cast<unsigned char>(bytes[b])) << 8 * b;
+  }
+  return chunk;
+}
+
+// Hands every completed message to `done` and drops it; also lets MPI progress the others.
+template <typename Done>
+void complete(std::list<Message>& messages, const Done& done) {
+  for (auto it = messages.begin(); it != messages.end();) {
+    int finished = 0;
+    MPI_Test(&it->request, &finished, MPI_STATUS_IGNORE);
+    if (!finished) {
+      ++it;
+      continue;
+    }
+    done(*it);
+    it = messages.erase(it);
+  }
+}
+
+// Rank 0 posts a receive for every chunk that has arrived (the matched probe takes each message
+// once, however many a rank has sent) and stores those received, without blocking: chunks are
+// above the eager limit, so a sender's chunk moves only once its receive is posted, and a blocking
+// receive between rank 0's own chunks would leave the sender idle meanwhile.
+void receive_chunks(std::list<Message>& incoming, std::size_t& received,
+                    const std::function<void(std::uint64_t, const std::string&)>& store) {
+  for (;;) {
+    int arrived = 0;
+    MPI_Message handle;
+    MPI_Status status;
+    MPI_Improbe(MPI_ANY_SOURCE, kChunkTag, MPI_COMM_WORLD, &arrived, &handle, &status);
+    if (!arrived) break;
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_CHAR, &bytes);
+    Message& message = incoming.emplace_back();
+    message.bytes.resize(static_cast<std::size_t>(bytes));
+    MPI_Imrecv(message.bytes.data(), bytes, MPI_CHAR, &handle, &message.request);
+  }
+  complete(incoming, [&](const Message& message) {
+    store(decoded_chunk(message.bytes), message.bytes.substr(8));
+    ++received;
+  });
 }
 #endif
 
@@ -119,20 +149,33 @@ void ProcessGroup::run_chunks(
     return;
   }
 #ifdef GP_WITH_MPI
+  // Rank 0's receives, or this rank's sends, not yet completed.
+  std::list<Message> pending;
   std::size_t received = 0;
   for (std::size_t k = static_cast<std::size_t>(rank_); k < chunks.size(); k += size_) {
     const std::string text = run(chunks[k]);
-    if (!root()) {
-      send_chunk(chunks[k], text);
+    if (root()) {
+      store(chunks[k], text);
+      ++received;
+      // Store what the other ranks sent meanwhile, so that a stop loses as little as possible.
+      receive_chunks(pending, received, store);
       continue;
     }
-    store(chunks[k], text);
-    ++received;
-    // Store what the other ranks sent meanwhile, so that a stop loses as little as possible.
-    while (receive_chunk(store, false)) ++received;
+    // The send completes once rank 0 has posted its receive; this rank computes on meanwhile.
+    Message& message = pending.emplace_back();
+    message.bytes = encode(chunks[k], text);
+    MPI_Isend(message.bytes.data(), static_cast<int>(message.bytes.size()), MPI_CHAR, 0, kChunkTag,
+              MPI_COMM_WORLD, &message.request);
+    complete(pending, [](const Message&) {});
   }
-  if (root()) {
-    for (; received < chunks.size(); ++received) receive_chunk(store, true);
+  for (;; nap()) {
+    if (root()) {
+      receive_chunks(pending, received, store);
+      if (received == chunks.size()) break;
+    } else {
+      complete(pending, [](const Message&) {});
+      if (pending.empty()) break;
+    }
   }
   MPI_Request done;
   MPI_Ibarrier(MPI_COMM_WORLD, &done);
