@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <exception>
 
+#include <tbb/task_arena.h>
+
 #include "engine/output/output_times.hpp"
 #include "engine/scene/run.hpp"
 #include "engine/scene/scene_space.hpp"
@@ -34,9 +36,7 @@ OracleComparison compare_with_oracle(const Scene& scene, const std::vector<doubl
   return c;
 }
 
-}  // namespace
-
-SampleOutputs run_sample(const Scene& scene, bool with_oracle) {
+SampleOutputs run_alone(const Scene& scene, bool with_oracle) {
   SampleOutputs out;
   std::vector<double> times;
   std::vector<std::vector<BodyState>> states;  // kept only for the oracle's comparison
@@ -67,6 +67,15 @@ SampleOutputs run_sample(const Scene& scene, bool with_oracle) {
   }
   if (with_oracle) out.oracle = compare_with_oracle(scene, times, states);
   return out;
+}
+
+}  // namespace
+
+SampleOutputs run_sample(const Scene& scene, bool with_oracle) {
+  // The samples are the parallel work: each steps on one thread, in an arena of its own per
+  // worker, rather than splitting its steps across workers that other samples keep busy.
+  thread_local tbb::task_arena alone(1);
+  return alone.execute([&] { return run_alone(scene, with_oracle); });
 }
 
 }  // namespace gp::verification
