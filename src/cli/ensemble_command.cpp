@@ -49,10 +49,7 @@ EnsembleSetup setup_of(const EnsembleOptions& o, std::string& blamed) {
   blamed = o.scene.string();
   // A scene declared outside the oracle's domain would only record the declaration per sample, and
   // a chaotic pile's samples have no trajectory to compare.
-  const std::string stem = o.scene.stem().string();
-  if (const auto reason = verification::outside_oracle_domain(stem).has_value()
-                              ? verification::outside_oracle_domain(stem)
-                              : verification::chaotic_pile(stem);
+  if (const auto reason = verification::no_oracle_trajectory(o.scene.stem().string());
       o.oracle && reason) {
     throw InputError("--oracle", "needs a scene in the oracle's domain", std::string(*reason));
   }
@@ -147,8 +144,7 @@ int compare(const EnsembleSetup& setup, const EnsembleOptions& options) {
   const std::string name = options.scene.stem().string();
   const auto rows =
       verification::error_against_spread(setup.nominal, setup.spreads, setup.samples, setup.seed,
-                                         !verification::outside_oracle_domain(name).has_value() &&
-                                             !verification::chaotic_pile(name).has_value());
+                                         !verification::no_oracle_trajectory(name).has_value());
   std::filesystem::create_directories(options.out);
   PartialFile csv(options.out / "numerical_error_vs_spread.csv");
   PartialFile md(options.out / "numerical_error_vs_spread.md");

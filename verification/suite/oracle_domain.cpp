@@ -59,6 +59,11 @@ std::optional<std::string_view> outside_oracle_domain(std::string_view name) {
   return reason_in(kOutside, name);
 }
 
+std::optional<std::string_view> no_oracle_trajectory(std::string_view name) {
+  if (const auto reason = outside_oracle_domain(name)) return reason;
+  return chaotic_pile(name);
+}
+
 OracleOptions reference_options(const Scene& scene) {
   OracleOptions options;
   options.rtol = options.atol = scene.settings.G ? 1e-14 : 1e-12;

@@ -24,6 +24,10 @@ std::optional<std::string_view> outside_oracle_domain(std::string_view name);
 /// pile, whose well-posed measures the pile section compares instead), or nothing.
 std::optional<std::string_view> chaotic_pile(std::string_view name);
 
+/// Why the oracle gives no trajectory to compare with for `name`: outside its domain, or a
+/// chaotic pile; nothing when it gives one.
+std::optional<std::string_view> no_oracle_trajectory(std::string_view name);
+
 /// The options of a reference solution: rtol = atol = 1e-12, and 1e-14 under pairwise
 /// gravitation, where orbits accumulate the per-step tolerance over many steps.
 OracleOptions reference_options(const Scene& scene);
