@@ -1,11 +1,13 @@
 #pragma once
-// Small scenes built in code for the oracle's tests: discs, a ground line, gravity.
+// Small scenes built in code for the oracle's tests (discs, a ground line, gravity), and the
+// options that run them.
 
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "verification/oracle/oracle.hpp"
 
 namespace gp::test {
 
@@ -50,6 +52,13 @@ inline Settings with_gravity(double g) {
   Settings settings;
   settings.gravity = {0.0, -g};
   return settings;
+}
+
+/// The oracle's default options with `method`.
+inline verification::OracleOptions with(verification::OracleMethod method) {
+  verification::OracleOptions options;
+  options.method = method;
+  return options;
 }
 
 inline Scene scene_of(const Settings& settings, std::vector<BodyDef> bodies) {

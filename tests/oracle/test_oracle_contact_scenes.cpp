@@ -18,11 +18,11 @@
 
 using gp::Vec2;
 using gp::verification::OracleMethod;
-using gp::verification::OracleOptions;
 using gp::verification::OracleResult;
 using gp::verification::run_oracle;
 
 using gp::test::check_near;
+using gp::test::with;
 
 namespace {
 
@@ -38,12 +38,6 @@ std::vector<double> instants(const gp::Scene& scene) {
   const auto n = static_cast<int>(std::lround(scene.duration / scene.output_dt));
   for (int k = 0; k <= n; ++k) times.push_back(k * scene.output_dt);
   return times;
-}
-
-OracleOptions with(OracleMethod method) {
-  OracleOptions options;
-  options.method = method;
-  return options;
 }
 
 const auto kMethods = {OracleMethod::CvodeAdams, OracleMethod::CvodeBdf, OracleMethod::ArkodeErk};

@@ -22,16 +22,12 @@ using gp::verification::OracleOptions;
 using gp::verification::OracleResult;
 using gp::verification::run_oracle;
 
+using gp::test::with;
+
 namespace {
 
 constexpr double kG = 9.81;
 constexpr double kRadius = 0.5;
-
-OracleOptions with(OracleMethod method) {
-  OracleOptions options;
-  options.method = method;
-  return options;
-}
 
 // Three frictionless discs (C_R = 0) dropped into a box 4 m wide: the top one strikes the other
 // two, rides on the right one and leaves it before it lands.
