@@ -37,6 +37,7 @@ class Settings:
     sleep_angular_speed: float
     time_to_sleep: float
     coloured_island_contacts: int
+    island_part_contacts: int
     def __init__(self, gravity: Vector = ..., G: Optional[float] = ...,
                  integrator: Integrator = ...) -> None: ...
 

@@ -50,7 +50,9 @@ void bind_settings(py::module_& m) {
       .def_readwrite("sleep_angular_speed", &Settings::sleep_angular_speed, "rad/s")
       .def_readwrite("time_to_sleep", &Settings::time_to_sleep, "s")
       .def_readwrite("coloured_island_contacts", &Settings::coloured_island_contacts,
-                     "islands of more contacts are solved colour by colour (0: never)");
+                     "islands of more contacts are solved colour by colour (0: never)")
+      .def_readwrite("island_part_contacts", &Settings::island_part_contacts,
+                     "islands of more contacts are cut into parts that threads share (0: never)");
 }
 
 void bind_shapes(py::module_& m) {

@@ -71,6 +71,8 @@ Settings read_settings(const JsonObject& root) {
   settings.time_to_sleep = root.get_or<double>("time_to_sleep", settings.time_to_sleep);
   settings.coloured_island_contacts =
       root.get_or<int>("coloured_island_contacts", settings.coloured_island_contacts);
+  settings.island_part_contacts =
+      root.get_or<int>("island_part_contacts", settings.island_part_contacts);
   validate_settings(settings);
   return settings;
 }
@@ -127,7 +129,8 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
   root.allow_only({"description", "gravity", "G", "integrator", "dt", "duration", "output_dt",
                    "velocity_iterations", "velocity_tolerance", "direct_solve_points",
                    "position_iterations", "restitution_threshold", "sleep", "sleep_speed",
-                   "sleep_angular_speed", "time_to_sleep", "coloured_island_contacts", "bodies"});
+                   "sleep_angular_speed", "time_to_sleep", "coloured_island_contacts",
+                   "island_part_contacts", "bodies"});
   root.get_optional<std::string>("description");  // for the reader of the file: type only
   Scene scene;
   scene.settings = read_settings(root);

@@ -118,6 +118,10 @@ void validate_settings(const Settings& settings) {
     throw InputError("coloured_island_contacts", "must be >= 0 (0: never)",
                      number_text(settings.coloured_island_contacts));
   }
+  if (settings.island_part_contacts < 0) {
+    throw InputError("island_part_contacts", "must be >= 0 (0: never)",
+                     number_text(settings.island_part_contacts));
+  }
 }
 
 void validate_step(double dt, const std::string& field) {

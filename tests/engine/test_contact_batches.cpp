@@ -1,5 +1,6 @@
 // The order of the contact passes (ContactBatches): every contact once, islands in the contacts'
-// order, large islands by colour, against orders worked out by hand for chains of bodies.
+// order, large islands in parts or by colour, against orders worked out by hand for chains of
+// bodies.
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -12,12 +13,15 @@
 
 namespace {
 
-// `bodies` unit bodies, body 0 static, and one single-point contact per pair of `links`.
+// `bodies` unit bodies, body 0 static, body b at (b, 0), and one single-point contact per pair of
+// `links`.
 struct Graph {
   gp::BodyInertia inertia;
   gp::ContactSet contacts;
+  std::vector<gp::Vec2> positions;
 
   Graph(std::size_t bodies, const std::vector<std::pair<gp::BodyId, gp::BodyId>>& links) {
+    for (std::size_t b = 0; b < bodies; ++b) positions.emplace_back(static_cast<double>(b), 0.0);
     inertia.inverse_mass.assign(bodies, 1.0);
     inertia.inverse_moment.assign(bodies, 6.0);
     inertia.inverse_mass[0] = inertia.inverse_moment[0] = 0.0;
@@ -48,9 +52,10 @@ std::vector<std::uint32_t> in_order(std::size_t n) {
 constexpr std::size_t kColouredAbove = 4096;
 
 // The contact indices in the order one thread visits them.
-std::vector<std::uint32_t> visits(const Graph& g, std::size_t coloured_above = kColouredAbove) {
+std::vector<std::uint32_t> visits(const Graph& g,
+                                  gp::IslandSplitting splitting = {0, kColouredAbove}) {
   gp::ContactBatches batches;
-  batches.build(g.contacts, g.inertia, coloured_above);
+  batches.build(g.contacts, g.inertia, g.positions, splitting);
   std::vector<std::uint32_t> order;
   tbb::task_arena(1).execute([&] {
     batches.run([&](std::uint32_t i) {
@@ -70,7 +75,7 @@ TEST_CASE("An island under the colouring threshold is visited in the contacts' o
 
 TEST_CASE("With colouring off, a large island is visited in the contacts' own order") {
   const Graph g = chain(kColouredAbove + 10);
-  CHECK(visits(g, 0) == in_order(g.contacts.size()));
+  CHECK(visits(g, {0, 0}) == in_order(g.contacts.size()));
 }
 
 TEST_CASE("Islands joined only through a static body are separate, each in its own order") {
@@ -96,7 +101,7 @@ TEST_CASE("A large island is visited colour after colour, no colour sharing a mo
 TEST_CASE("The passes' largest value is the same on any number of threads") {
   const Graph g = chain(kColouredAbove + 100);
   gp::ContactBatches batches;
-  batches.build(g.contacts, g.inertia, kColouredAbove);
+  batches.build(g.contacts, g.inertia, g.positions, {0, kColouredAbove});
   const auto value = [](std::uint32_t i) { return static_cast<double>((i * 7919U) % 10007U); };
   const double one = tbb::task_arena(1).execute([&] { return batches.run(value); });
   const double two = tbb::task_arena(2).execute([&] { return batches.run(value); });
@@ -104,4 +109,33 @@ TEST_CASE("The passes' largest value is the same on any number of threads") {
   for (std::uint32_t i = 0; i < g.contacts.size(); ++i) largest = std::max(largest, value(i));
   CHECK(one == largest);
   CHECK(two == largest);
+}
+
+TEST_CASE("A large island is visited part by part, then the contacts between parts") {
+  // The chain of 8 bodies at x = 1..8, and its 8 contacts, parted above 3 contacts: halved twice
+  // (8 / 2 > 3, 8 / 4 <= 3) into the parts {1, 2}, {3, 4}, {5, 6}, {7, 8}. Contacts 0 (ground
+  // - 1) and 1 (1 - 2) are inside part 0, 3 inside part 1, 5 inside part 2, 7 inside part 3;
+  // 2 (2 - 3) joins parts 0 and 1, 6 (6 - 7) parts 2 and 3, and 4 (4 - 5) the two halves.
+  const Graph g = chain(8);
+  CHECK(visits(g, {3, 0}) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
+  // Under the threshold, or with parting off, the contacts' own order.
+  CHECK(visits(g, {8, 0}) == in_order(8));
+  CHECK(visits(g, {0, 0}) == in_order(8));
+}
+
+TEST_CASE("An island is halved across its longer side, whatever order its bodies come in") {
+  // The same chain standing upright (body b at (0, b)) and listed from the top: the same parts,
+  // found by height, and the same order as along x.
+  std::vector<std::pair<gp::BodyId, gp::BodyId>> links{{8, 0}};
+  for (gp::BodyId b = 8; b > 1; --b) links.emplace_back(b, b - 1);
+  Graph g(9, links);
+  for (std::size_t b = 0; b < 9; ++b) g.positions[b] = {0.0, 9.0 - static_cast<double>(b)};
+  // Bodies 8, 7 are at the bottom: parts {8, 7}, {6, 5}, {4, 3}, {2, 1}, contact k joining
+  // bodies 9 - k and 8 - k.
+  CHECK(visits(g, {3, 0}) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
+}
+
+TEST_CASE("Colouring an island takes precedence over parting it") {
+  const Graph g = chain(kColouredAbove + 10);
+  CHECK(visits(g, {64, kColouredAbove}) == visits(g, {0, kColouredAbove}));
 }

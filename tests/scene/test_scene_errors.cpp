@@ -114,7 +114,8 @@ TEST_CASE("Unknown fields are rejected at every level", "[FR:Verify-Physical_Con
               "is not a known field (known: description, gravity, G, integrator, dt, duration, "
               "output_dt, velocity_iterations, velocity_tolerance, direct_solve_points, "
               "position_iterations, restitution_threshold, sleep, sleep_speed, "
-              "sleep_angular_speed, time_to_sleep, coloured_island_contacts, bodies)",
+              "sleep_angular_speed, time_to_sleep, coloured_island_contacts, island_part_contacts, "
+              "bodies)",
               "[0,-9.81]");
   check_error(scene_with(R"({"name": "b", "position": [0, 0], "mas": 1})"), "bodies[0].mas",
               "is not a known field (known: name, type, position, angle, velocity, "
@@ -227,6 +228,8 @@ TEST_CASE("Settings are checked", "[FR:Verify-Physical_Constraints]") {
               "must be >= 0", "-1");
   check_error(R"({"coloured_island_contacts": -1, "dt": 0.01, "duration": 1, "bodies": []})",
               "coloured_island_contacts", "must be >= 0 (0: never)", "-1");
+  check_error(R"({"island_part_contacts": -2, "dt": 0.01, "duration": 1, "bodies": []})",
+              "island_part_contacts", "must be >= 0 (0: never)", "-2");
   check_error(R"({"direct_solve_points": 300, "dt": 0.01, "duration": 1, "bodies": []})",
               "direct_solve_points", "must be in [0, 256]", "300");
   check_error(R"({"velocity_tolerance": -1e-5, "dt": 0.01, "duration": 1, "bodies": []})",

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bit>
+#include <limits>
 
 namespace gp {
 
@@ -14,28 +15,145 @@ constexpr std::size_t kColours = 64;
 }  // namespace
 
 void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inertia,
-                           std::size_t coloured_above) {
+                           std::span<const Vec2> positions, const IslandSplitting& splitting) {
   islands_.find(contacts, inertia);
   order_.clear();
   task_end_.clear();
   stage_end_.clear();
+  parted_.clear();
   const std::size_t bodies = inertia.inverse_mass.size();
-  const auto large = [this, coloured_above](std::size_t root) {
-    return coloured_above > 0 &&
-           islands_.island_end[root] - islands_.island_start[root] > coloured_above;
+  const auto contacts_in = [this](std::size_t root) {
+    return islands_.island_end[root] - islands_.island_start[root];
   };
-  bool any_large = false;
+  bool any_coloured = false;
   for (std::size_t r = 0; r < bodies; ++r) {
     const std::uint32_t start = islands_.island_start[r];
     const std::uint32_t end = islands_.island_end[r];
-    any_large = any_large || large(r);
-    if (start == end || large(r)) continue;
-    order_.insert(order_.end(), islands_.order.begin() + start, islands_.order.begin() + end);
-    task_end_.push_back(static_cast<std::uint32_t>(order_.size()));
+    if (start == end) continue;
+    if (splitting.coloured_above > 0 && contacts_in(r) > splitting.coloured_above) {
+      any_coloured = true;
+    } else if (splitting.parted_above > 0 && contacts_in(r) > splitting.parted_above) {
+      parted_.push_back({r, 0, 0});
+    } else {
+      order_.insert(order_.end(), islands_.order.begin() + start, islands_.order.begin() + end);
+      task_end_.push_back(static_cast<std::uint32_t>(order_.size()));
+    }
   }
-  stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
-  if (!any_large) return;
+  part(contacts, inertia, positions, splitting.parted_above);
+  first_colour_stage_ = stage_end_.size();
+  if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
+}
 
+void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t first,
+                                  std::uint32_t last, int depth, std::uint32_t code) {
+  const auto begin = part_bodies_.begin();
+  if (depth == 0) {
+    for (auto b = begin + first; b != begin + last; ++b) part_code_[*b] = code;
+    return;
+  }
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity());
+  Vec2 high = -low;
+  for (auto b = begin + first; b != begin + last; ++b) {
+    low = low.cwiseMin(positions[*b]);
+    high = high.cwiseMax(positions[*b]);
+  }
+  // Across the longer side, so that the cut meets as few contacts as the shape allows; ties by
+  // body id, so that the halves do not depend on the order the bodies were listed in.
+  const int axis = high.x() - low.x() >= high.y() - low.y() ? 0 : 1;
+  const std::uint32_t middle = first + (last - first) / 2;
+  std::nth_element(begin + first, begin + middle, begin + last, [&](BodyId a, BodyId b) {
+    const double pa = positions[a][axis];
+    const double pb = positions[b][axis];
+    return pa < pb || (pa == pb && a < b);
+  });
+  halve_bodies(positions, first, middle, depth - 1, 2 * code);
+  halve_bodies(positions, middle, last, depth - 1, 2 * code + 1);
+}
+
+void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia,
+                          std::span<const Vec2> positions, std::size_t parted_above) {
+  const auto close_stage = [this] {
+    stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
+  };
+  if (parted_.empty()) {
+    close_stage();
+    return;
+  }
+  constexpr std::uint32_t kUnlisted = ~std::uint32_t{0};
+  part_code_.assign(inertia.inverse_mass.size(), kUnlisted);
+  group_of_.resize(contacts.size());
+  std::size_t groups = 0;
+  int deepest = 0;
+  for (PartedIsland& island : parted_) {
+    const std::uint32_t start = islands_.island_start[island.root];
+    const std::uint32_t end = islands_.island_end[island.root];
+    part_bodies_.clear();
+    for (std::uint32_t e = start; e < end; ++e) {
+      const Contact& c = contacts[islands_.order[e]];
+      for (const BodyId b : {c.body_a, c.body_b}) {
+        if (movable(inertia, b) && part_code_[b] == kUnlisted) {
+          part_code_[b] = 0;
+          part_bodies_.push_back(b);
+        }
+      }
+    }
+    int depth = 1;
+    while (depth < kMaxPartDepth && ((end - start) >> depth) > parted_above) ++depth;
+    halve_bodies(positions, 0, static_cast<std::uint32_t>(part_bodies_.size()), depth, 0);
+    island.depth = depth;
+    island.first_group = groups;
+    groups += std::size_t{2} << depth;
+    deepest = std::max(deepest, depth);
+    // A contact's group: its part, or, between two parts, the smallest group of parts holding
+    // both, whose heap number is their codes' common leading bits under a leading 1.
+    for (std::uint32_t e = start; e < end; ++e) {
+      const Contact& c = contacts[islands_.order[e]];
+      const std::uint32_t a = part_code_[movable(inertia, c.body_a) ? c.body_a : c.body_b];
+      const std::uint32_t b = part_code_[movable(inertia, c.body_b) ? c.body_b : c.body_a];
+      const int shift = std::bit_width(a ^ b);
+      group_of_[islands_.order[e]] = ((std::uint32_t{1} << depth) | a) >> shift;
+    }
+  }
+  group_start_.assign(groups, 0);
+  for (const PartedIsland& island : parted_) {
+    for (std::uint32_t e = islands_.island_start[island.root]; e < islands_.island_end[island.root];
+         ++e) {
+      ++group_start_[island.first_group + group_of_[islands_.order[e]]];
+    }
+  }
+  // Stage s holds the groups s halvings above the parts (stage 0 the parts themselves, after the
+  // islands not cut): a group is solved after the groups inside it.
+  auto cursor = static_cast<std::uint32_t>(order_.size());
+  for (int stage = 0; stage <= deepest; ++stage) {
+    for (const PartedIsland& island : parted_) {
+      if (island.depth < stage) continue;
+      const std::size_t level = static_cast<std::size_t>(island.depth - stage);
+      for (std::size_t g = std::size_t{1} << level; g < std::size_t{2} << level; ++g) {
+        std::uint32_t& slot = group_start_[island.first_group + g];
+        const std::uint32_t count = slot;
+        slot = cursor;
+        cursor += count;
+        if (count > 0) task_end_.push_back(cursor);
+      }
+    }
+    close_stage();
+  }
+  order_.resize(cursor);
+  for (const PartedIsland& island : parted_) {
+    for (std::uint32_t e = islands_.island_start[island.root]; e < islands_.island_end[island.root];
+         ++e) {
+      const std::uint32_t i = islands_.order[e];
+      order_[group_start_[island.first_group + group_of_[i]]++] = i;
+    }
+  }
+}
+
+void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inertia,
+                            std::size_t coloured_above) {
+  const std::size_t bodies = inertia.inverse_mass.size();
+  const auto large = [this, coloured_above](std::size_t root) {
+    return islands_.island_end[root] - islands_.island_start[root] > coloured_above;
+  };
   // Greedy colouring in the contacts' order: each contact takes the lowest colour that no other
   // contact of its movable bodies has. Static and kinematic bodies take any number of contacts
   // of a colour, as the solver only reads their motion.

@@ -1,14 +1,18 @@
 #pragma once
 // The order in which the contact passes visit a step's contacts, and which of them may be solved
 // side by side on several threads. Each island is solved on its own, in the contacts' order, as
-// one thread would; an island of more contacts than Settings::coloured_island_contacts (when
-// set) is graph-coloured instead, so that its contacts are solved colour after colour, the contacts
-// of a colour side by side. The order depends on the contacts alone, never on the number of
-// threads, so a step gives the same result to the bit on any number of them.
+// one thread would. An island of more contacts than Settings::island_part_contacts is cut into
+// parts by its bodies' places, the parts solved side by side, each in the contacts' order, and
+// then the contacts that join them; one of more than Settings::coloured_island_contacts (when
+// set) is graph-coloured instead, so that its contacts are solved colour after colour, the
+// contacts of a colour side by side. The order depends on the contacts and the bodies' places
+// alone, never on the number of threads, so a step gives the same result to the bit on any
+// number of them.
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -38,16 +42,28 @@ class ContactsInOrder {
   std::size_t size_;
 };
 
+/// Which islands ContactBatches cuts into parts or colours, by their number of contacts; 0: none.
+struct IslandSplitting {
+  std::size_t parted_above = 0;    ///< Settings::island_part_contacts
+  std::size_t coloured_above = 0;  ///< Settings::coloured_island_contacts, before parting
+};
+
 class ContactBatches {
  public:
   /// Contacts of a colour a thread takes at a time.
   static constexpr std::size_t kContactsPerChunk = 128;
+  /// The most halvings of an island: 64 parts.
+  static constexpr int kMaxPartDepth = 6;
 
-  /// Groups `contacts` into stages of tasks: the islands of at most `coloured_above` contacts
-  /// first (all of them when it is 0), one task each, then each colour of the larger islands, one
-  /// task per contact. No two tasks of a stage share a body that the solver moves. Reuses its
-  /// arrays' room.
-  void build(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
+  /// Groups `contacts`, whose bodies are at `positions` [m, by body id], into stages of tasks.
+  /// First stage: each island not cut, and each part of the cut ones. An island to part is halved
+  /// at the median of its bodies' places along its longer side, and each half again, until the
+  /// parts have at most about `splitting.parted_above` contacts; a contact between two parts
+  /// joins the smallest group of parts holding both, solved in a later stage, after the parts.
+  /// Last stages: each colour of the coloured islands, one task per contact. No two tasks of a
+  /// stage share a body that the solver moves. Reuses its arrays' room.
+  void build(const ContactSet& contacts, const BodyInertia& inertia,
+             std::span<const Vec2> positions, const IslandSplitting& splitting);
 
   /// The islands of the contacts build was given.
   const ContactIslands& islands() const { return islands_; }
@@ -67,9 +83,9 @@ class ContactBatches {
     for (std::size_t stage = 0; stage < stage_end_.size(); ++stage) {
       const std::uint32_t last = stage_end_[stage];
       if (first == last) continue;
-      // An island is a task of its own; a colour's contacts, each a task of tens of
+      // An island or a part is a task of its own; a colour's contacts, each a task of tens of
       // nanoseconds, are handed out by the hundred, as each hand-out costs about a microsecond.
-      const std::size_t grain = stage == 0 ? 1 : kContactsPerChunk;
+      const std::size_t grain = stage < first_colour_stage_ ? 1 : kContactsPerChunk;
       largest =
           alone ? tasks(first, last, largest)
                 : std::max(largest, tbb::parallel_reduce(
@@ -84,12 +100,31 @@ class ContactBatches {
   }
 
  private:
+  // An island cut into 2^depth parts; its groups of parts are numbered as in a binary heap (1:
+  // the whole island, 2k and 2k + 1: the halves of k), from `first_group` in group_start_.
+  struct PartedIsland {
+    std::size_t root;
+    int depth;
+    std::size_t first_group;
+  };
+  void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
+            std::size_t parted_above);
+  void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
+  void halve_bodies(std::span<const Vec2> positions, std::uint32_t first, std::uint32_t last,
+                    int depth, std::uint32_t code);
+
   ContactIslands islands_;
   std::vector<std::uint32_t> order_;      // contact indices, task after task
   std::vector<std::uint32_t> task_end_;   // per task: one past its last entry in order_
   std::vector<std::uint32_t> stage_end_;  // per stage: one past its last task
-  std::vector<std::uint64_t> colours_;    // per body: the colours its contacts took, as bits
-  std::vector<std::uint8_t> colour_;      // per contact of a large island: its colour
+  std::size_t first_colour_stage_ = 0;
+  std::vector<PartedIsland> parted_;
+  std::vector<BodyId> part_bodies_;         // the movable bodies of the island being cut
+  std::vector<std::uint32_t> part_code_;    // per body: the part it fell into, as halving bits
+  std::vector<std::uint32_t> group_of_;     // per contact of a cut island: its group
+  std::vector<std::uint32_t> group_start_;  // per group: its first entry in order_
+  std::vector<std::uint64_t> colours_;      // per body: the colours its contacts took, as bits
+  std::vector<std::uint8_t> colour_;        // per contact of a large island: its colour
 };
 
 }  // namespace gp

@@ -14,8 +14,9 @@ PositionLimits position_limits(const Settings& s) {
 }  // namespace
 
 void ContactSolver::prepare(StepContext& c) {
-  batches_.build(c.contacts, c.inertia,
-                 static_cast<std::size_t>(c.settings.coloured_island_contacts));
+  batches_.build(c.contacts, c.inertia, c.start.position,
+                 {static_cast<std::size_t>(c.settings.island_part_contacts),
+                  static_cast<std::size_t>(c.settings.coloured_island_contacts)});
   prepare_contacts(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings});
   warm_start(batches_, c.contacts, c.inertia, c.state);
 }
