@@ -7,8 +7,21 @@
 #include "engine/collision/signed_distance.hpp"
 #include "engine/geometry/shape_extent.hpp"
 #include "engine/step/step_context.hpp"
+#include "engine/threads.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace gp {
+
+namespace {
+
+// Pairs a thread takes at a time, and pairs whose times of impact are found side by side before
+// they are gathered (a fixed room of slots rather than room per body).
+constexpr std::size_t kPairsPerTask = 128;
+constexpr std::size_t kPairsPerBlock = 8 * kPairsPerTask;
+
+}  // namespace
 
 void LocalImpacts::classify(StepContext& ctx) {
   pending_.clear();
@@ -17,6 +30,27 @@ void LocalImpacts::classify(StepContext& ctx) {
   const WorldShapes& start = ctx.world_start;
   const WorldShapes& end = ctx.world_end;
   const ImpactFilter f = impact_filter(ctx.settings);
+  const auto impact_of = [&](const ShapePair& p) {
+    return impact_time({ctx.shapes[p.first], start[p.first], end[p.first]},
+                       {ctx.shapes[p.second], start[p.second], end[p.second]}, *ctx.motion,
+                       {0.0, ctx.h}, f);
+  };
+  // On several threads, the times of impact of a block of pairs apart at a time, each into its
+  // slot, then gathered in the pairs' order, so that they do not depend on the number of threads.
+  const bool alone = one_thread();
+  const auto gather = [&] {
+    apart_times_.resize(apart_.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, apart_.size(), kPairsPerTask),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                          apart_times_[k] = impact_of(apart_[k]);
+                        }
+                      });
+    for (std::size_t k = 0; k < apart_.size(); ++k) {
+      if (apart_times_[k]) pending_.push_back({apart_[k], *apart_times_[k]});
+    }
+    apart_.clear();
+  };
   // Both lists are sorted by pair: one forward scan finds each pair's contact.
   auto contact = contacts.begin();
   for (const ShapePair& p : ctx.pairs) {
@@ -24,11 +58,14 @@ void LocalImpacts::classify(StepContext& ctx) {
     const bool has_contact = contact != contacts.end() && contact->key() == contact_key(p);
     // Touching already: the contact solver's, and no distance to compute.
     if (has_contact && touching(ctx, *contact)) continue;
-    const auto tau = impact_time({ctx.shapes[p.first], start[p.first], end[p.first]},
-                                 {ctx.shapes[p.second], start[p.second], end[p.second]},
-                                 *ctx.motion, {0.0, ctx.h}, f);
-    if (tau) pending_.push_back({p, *tau});
+    if (alone) {
+      if (const auto tau = impact_of(p)) pending_.push_back({p, *tau});
+      continue;
+    }
+    apart_.push_back(p);
+    if (apart_.size() == kPairsPerBlock) gather();
   }
+  if (!apart_.empty()) gather();
   if (pending_.empty()) return;
   // An impact is resolved at its t_c; its speculative contact must not close the gap before.
   auto impact = pending_.begin();

@@ -8,6 +8,7 @@
 // contact instead, as a heap's many small impacts are; only isolated impacts (free flight into a
 // wall, the floor or another free body) take the exact path.
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -77,6 +78,9 @@ class LocalImpacts {
   bool search_after(StepContext& ctx, double tau);
 
   std::vector<Pending> pending_;
+  // classify's pairs apart, and their times of impact, a block at a time.
+  std::vector<ShapePair> apart_;
+  std::vector<std::optional<double>> apart_times_;
   // Who owns a body's contacts this step, one role per body. A body's contacts follow it: those
   // of a body in the solver are the contact solver's (resting, or impacts handed over as
   // speculative contacts); those of a body with an impact are dropped, as its impacts' search
