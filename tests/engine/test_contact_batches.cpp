@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <tbb/task_arena.h>
@@ -138,4 +139,13 @@ TEST_CASE("An island is halved across its longer side, whatever order its bodies
 TEST_CASE("Colouring an island takes precedence over parting it") {
   const Graph g = chain(kColouredAbove + 10);
   CHECK(visits(g, {64, kColouredAbove}) == visits(g, {0, kColouredAbove}));
+}
+
+TEST_CASE(
+    "A body whose place is not a number leaves every contact of a parted island visited once") {
+  Graph g = chain(8);
+  g.positions[3].x() = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::uint32_t> order = visits(g, {3, 0});
+  std::sort(order.begin(), order.end());
+  CHECK(order == in_order(8));
 }

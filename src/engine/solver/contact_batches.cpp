@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bit>
+#include <cmath>
 #include <limits>
 
 namespace gp {
@@ -58,12 +59,18 @@ void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t
     high = high.cwiseMax(positions[*b]);
   }
   // Across the longer side, so that the cut meets as few contacts as the shape allows; ties by
-  // body id, so that the halves do not depend on the order the bodies were listed in.
+  // body id, so that the halves do not depend on the order the bodies were listed in. A place
+  // that is not a number (a step about to report it) counts as infinite, so that the order stays
+  // strict and nth_element within its range.
   const int axis = high.x() - low.x() >= high.y() - low.y() ? 0 : 1;
+  const auto place = [&](BodyId b) {
+    const double p = positions[b][axis];
+    return std::isnan(p) ? std::numeric_limits<double>::infinity() : p;
+  };
   const std::uint32_t middle = first + (last - first) / 2;
   std::nth_element(begin + first, begin + middle, begin + last, [&](BodyId a, BodyId b) {
-    const double pa = positions[a][axis];
-    const double pb = positions[b][axis];
+    const double pa = place(a);
+    const double pb = place(b);
     return pa < pb || (pa == pb && a < b);
   });
   halve_bodies(positions, first, middle, depth - 1, 2 * code);
