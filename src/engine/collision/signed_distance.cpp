@@ -20,14 +20,17 @@ int edge_count(const Hull& hull) {
   return hull.count() == 2 ? 1 : hull.count();
 }
 
-double distance_to_edges(const Vec2& point, const Hull& hull) {
-  double distance = std::numeric_limits<double>::infinity();
+// Squared: the root of the least is the least of the roots (a correctly rounded root is monotone),
+// so the nearest edge costs one root instead of one per edge.
+double squared_distance_to_edges(const Vec2& point, const Hull& hull) {
+  double squared = std::numeric_limits<double>::infinity();
   for (int i = 0; i < edge_count(hull); ++i) {
     const Vec2& start = hull.vertices[i];
     const Vec2& end = hull.vertices[hull.next(i)];
-    distance = std::min(distance, (point - closest_point_on_segment(point, start, end)).norm());
+    squared =
+        std::min(squared, (point - closest_point_on_segment(point, start, end)).squaredNorm());
   }
-  return distance;
+  return squared;
 }
 
 double core_distance(const Vec2& point, const Hull& hull) {
@@ -39,7 +42,7 @@ double core_distance(const Vec2& point, const Hull& hull) {
     // Inside: the nearest face is the way out.
     if (separation <= 0.0) return separation;
   }
-  return distance_to_edges(point, hull);
+  return std::sqrt(squared_distance_to_edges(point, hull));
 }
 
 double core_distance(const Hull& a, const Hull& b) {
@@ -56,10 +59,10 @@ double core_distance(const Hull& a, const Hull& b) {
   }
   // Apart: a separating edge normal only bounds the gap from below; the gap itself is between a
   // vertex of one and an edge of the other.
-  double distance = std::numeric_limits<double>::infinity();
-  for (const Vec2& v : a.vertices) distance = std::min(distance, distance_to_edges(v, b));
-  for (const Vec2& v : b.vertices) distance = std::min(distance, distance_to_edges(v, a));
-  return distance;
+  double squared = std::numeric_limits<double>::infinity();
+  for (const Vec2& v : a.vertices) squared = std::min(squared, squared_distance_to_edges(v, b));
+  for (const Vec2& v : b.vertices) squared = std::min(squared, squared_distance_to_edges(v, a));
+  return std::sqrt(squared);
 }
 
 }  // namespace

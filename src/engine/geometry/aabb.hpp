@@ -1,6 +1,8 @@
 #pragma once
 // Axis-aligned bounding box: the cheap stand-in for a shape in the broadphase.
 
+#include <algorithm>
+
 #include "gamephysics/models/types.hpp"
 
 namespace gp {
@@ -13,6 +15,13 @@ struct Aabb {
   bool overlaps(const Aabb& other) const {
     return min.x() <= other.max.x() && other.min.x() <= max.x() && min.y() <= other.max.y() &&
            other.min.y() <= max.y();
+  }
+
+  /// The widest gap between this box and `other` along an axis [m]: no point of one is nearer to
+  /// a point of the other; not above 0 when they overlap.
+  double gap_to(const Aabb& other) const {
+    return std::max(std::max(min.x() - other.max.x(), other.min.x() - max.x()),
+                    std::max(min.y() - other.max.y(), other.min.y() - max.y()));
   }
 
   /// The smallest box holding this one and `other`.
