@@ -38,8 +38,11 @@ class DocumentBuilder {
 
   bool start_object(std::size_t /*elements*/) { return open(nlohmann::json::object(), false); }
   bool start_array(std::size_t /*elements*/) { return open(nlohmann::json::array(), true); }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
+  bool end_object() { return end_array(); }
+  bool end_array() {
+    levels_.pop_back();
+    return true;
+  }
 
   /// Rejects a key repeated within an object.
   bool key(std::string& key) {
@@ -100,11 +103,6 @@ class DocumentBuilder {
     }
     nlohmann::json* value = place(std::move(empty));
     levels_.push_back({value, array, {}, {}, 0});
-    return true;
-  }
-
-  bool close() {
-    levels_.pop_back();
     return true;
   }
 
