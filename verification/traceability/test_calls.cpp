@@ -11,6 +11,8 @@ std::set<std::string> models_called(const std::string& body,
   for (const auto& r : registrations) {
     // "gp::dd::torque" is called as dd::torque( or dd::torque<...>(.
     const std::string name = r.function.substr(r.function.find("::") + 2);
+    // The call contains the name: most bodies do not, and need no regex (it was 40 % of `trace`).
+    if (body.find(name) == std::string::npos) continue;
     const std::regex call("\\b" + std::regex_replace(name, std::regex(":"), "\\:") +
                           "\\s*(<[^;(){}]*>)?\\s*\\(");
     if (std::regex_search(body, call) && called.insert(r.id).second) pending.push_back(&r);
