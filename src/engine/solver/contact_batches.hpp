@@ -60,8 +60,9 @@ class ContactBatches {
   /// at the median of its bodies' places along its longer side, and each half again, until the
   /// parts have at most about `splitting.parted_above` contacts; a contact between two parts
   /// joins the smallest group of parts holding both. Second stage: per cut island, one task of
-  /// its contacts between parts, group by group from the smallest up. Last stages: each colour of the coloured islands, one task per contact. No two tasks of a
-  /// stage share a body that the solver moves. Reuses its arrays' room.
+  /// its contacts between parts, group by group from the smallest up. Last stages: each colour
+  /// of the coloured islands, one task per contact. No two tasks of a stage share a body that
+  /// the solver moves. Reuses its arrays' room.
   void build(const ContactSet& contacts, const BodyInertia& inertia,
              std::span<const Vec2> positions, const IslandSplitting& splitting);
 
