@@ -12,7 +12,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_group.h>
 
 namespace gp {
 
@@ -39,24 +38,21 @@ namespace {
 // Pairs a thread takes at a time: a manifold costs about a hundred nanoseconds, a task about a
 // microsecond to hand out.
 constexpr std::size_t kPairsPerTask = 256;
-// Pairs whose manifolds are found side by side before they are appended: two blocks take 280 kB
-// of slots.
-constexpr std::size_t kPairsPerBlock = 4 * kPairsPerTask;
+// Pairs whose manifolds are found side by side before they are appended: a block's slots take
+// 560 kB.
+constexpr std::size_t kPairsPerBlock = 16 * kPairsPerTask;
 
 AnchorKind anchor_kind(const ShapeRecord& shape) {
   if (shape.centred_disc()) return AnchorKind::kCentredDisc;
   return shape.local.kind() == ShapeKind::kCircle ? AnchorKind::kOffsetDisc : AnchorKind::kFixed;
 }
 
-}  // namespace
-
-Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const ContactManifold& m,
-                        const MotionState& s, ContactSet& contacts) {
+// Fills in contact `c`, just appended with its `points`, from the manifold `m` of `pair` found
+// in state `s`: combined friction, and per point its depth and arms.
+void fill_contact(const ShapePair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                  const MotionState& s, Contact& c, std::span<ContactPointState> points) {
   const ShapeRecord& a = shapes[pair.first];
   const ShapeRecord& b = shapes[pair.second];
-  // Built in place: a contact built apart and then copied in is read back right after being
-  // written, and the copy's wide loads stall on the narrower stores that wrote it.
-  Contact& c = contacts.append(m.count);
   c.shape_a = pair.first;
   c.shape_b = pair.second;
   c.body_a = a.body;
@@ -65,7 +61,6 @@ Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const C
   c.friction = std::sqrt(a.friction * b.friction);
   const AnchorKind anchor_a = anchor_kind(a);
   const AnchorKind anchor_b = anchor_kind(b);
-  const std::span<ContactPointState> points = contacts.points(c);
   for (int k = 0; k < m.count; ++k) {
     const ContactPoint& point = m.points[k];
     ContactPointState& q = points[k];
@@ -75,6 +70,32 @@ Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const C
     q.depth = static_cast<float>(point.depth);
     set_arms(q, m.normal, point.position - s.position[a.body], point.position - s.position[b.body]);
   }
+}
+
+// Starts each of `points`, of the contact of the pair whose key is `pair`, from the impulses of
+// the warm start with its features, scaled by `scale`; `same` is the first warm start of pairs
+// not before `pair`.
+void warm_start_points(std::vector<WarmStart>::const_iterator same,
+                       std::vector<WarmStart>::const_iterator end, std::uint64_t pair, double scale,
+                       std::span<ContactPointState> points) {
+  for (; same != end && same->pair() == pair; ++same) {
+    for (ContactPointState& q : points) {
+      if (same->features() == q.id.key()) {
+        q.normal_impulse = scale * same->normal;
+        q.tangent_impulse = scale * same->tangent;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const ContactManifold& m,
+                        const MotionState& s, ContactSet& contacts) {
+  // Built in place: a contact built apart and then copied in is read back right after being
+  // written, and the copy's wide loads stall on the narrower stores that wrote it.
+  Contact& c = contacts.append(m.count);
+  fill_contact(pair, shapes, m, s, c, contacts.points(c));
   return c;
 }
 
@@ -86,55 +107,56 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   ContactSet& contacts = ctx.contacts;
   contacts.clear();
   const std::span<const ShapePair> pairs = ctx.pairs;
-  auto old = previous.begin();
-  const auto append = [&](const ShapePair& p, const ContactManifold& m) {
-    if (m.count == 0) return;
-    Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
-    // previous is sorted by key, and so are the pairs: one forward scan matches them.
-    const std::uint64_t pair = WarmStart::pair_key(p);
-    while (old != previous.end() && old->pair() < pair) ++old;
-    for (auto same = old; same != previous.end() && same->pair() == pair; ++same) {
-      for (ContactPointState& q : contacts.points(c)) {
-        if (same->features() == q.id.key()) {
-          q.normal_impulse = impulse_scale * same->normal;
-          q.tangent_impulse = impulse_scale * same->tangent;
-        }
-      }
-    }
-  };
   if (one_thread()) {
-    for (const ShapePair& p : pairs) append(p, collide(world[p.first], world[p.second], margin_));
+    // previous is sorted by key, and so are the pairs: one forward scan matches them.
+    auto old = previous.begin();
+    for (const ShapePair& p : pairs) {
+      const ContactManifold m = collide(world[p.first], world[p.second], margin_);
+      if (m.count == 0) continue;
+      Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
+      const std::uint64_t pair = WarmStart::pair_key(p);
+      while (old != previous.end() && old->pair() < pair) ++old;
+      warm_start_points(old, previous.end(), pair, impulse_scale, contacts.points(c));
+    }
     return;
   }
-  // On several threads, each pair's manifold into its own slot first; then appended in the
-  // pairs' order, so the contacts do not depend on the number of threads. A block of pairs at a
-  // time, so that the slots take a fixed room rather than room per body; the next block's
-  // manifolds are found on the other threads while this one's are appended.
-  manifolds_.resize(2 * kPairsPerBlock);
-  const auto slots_of = [](std::size_t first) {
-    return (first / kPairsPerBlock) % 2 * kPairsPerBlock;
-  };
-  const auto collide_block = [&](std::size_t first) {
-    const std::size_t slots = slots_of(first);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(
-                          first, std::min(first + kPairsPerBlock, pairs.size()), kPairsPerTask),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          manifolds_[slots + i - first] =
-                              collide(world[pairs[i].first], world[pairs[i].second], margin_);
-                        }
-                      });
-  };
-  if (!pairs.empty()) collide_block(0);
-  tbb::task_group next_block;
+  // On several threads, a block of pairs at a time (so that the slots take a fixed room rather
+  // than room per body): each pair's manifold into its own slot, the contacts appended in the
+  // pairs' order, so that they do not depend on the number of threads, and then filled in.
+  manifolds_.resize(kPairsPerBlock);
+  counts_.resize(kPairsPerBlock);
+  slots_.resize(kPairsPerBlock);
+  warm_start_of_.resize(kPairsPerBlock);
+  auto old = previous.begin();
   for (std::size_t first = 0; first < pairs.size(); first += kPairsPerBlock) {
-    const std::size_t next = first + kPairsPerBlock;
-    if (next < pairs.size()) next_block.run([&collide_block, next] { collide_block(next); });
-    const std::size_t slots = slots_of(first);
-    for (std::size_t i = first; i < std::min(next, pairs.size()); ++i) {
-      append(pairs[i], manifolds_[slots + i - first]);
+    const std::size_t size = std::min(kPairsPerBlock, pairs.size() - first);
+    const auto each_pair = [size](const auto& work) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kPairsPerTask),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) work(i);
+                        });
+    };
+    each_pair([&](std::size_t i) {
+      const ShapePair& p = pairs[first + i];
+      manifolds_[i] = collide(world[p.first], world[p.second], margin_);
+      counts_[i] = static_cast<std::uint8_t>(manifolds_[i].count);
+    });
+    contacts.reserve(std::span(counts_).first(size), std::span(slots_).first(size));
+    // previous is sorted by key, and so are the pairs: one forward scan finds each pair's first
+    // warm start.
+    for (std::size_t i = 0; i < size; ++i) {
+      const std::uint64_t pair = WarmStart::pair_key(pairs[first + i]);
+      while (old != previous.end() && old->pair() < pair) ++old;
+      warm_start_of_[i] = old;
     }
-    next_block.wait();
+    each_pair([&](std::size_t i) {
+      if (slots_[i].contact == ContactSlot::kNone) return;
+      const ShapePair& p = pairs[first + i];
+      Contact& c = contacts.place(slots_[i]);
+      fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
+      warm_start_points(warm_start_of_[i], previous.end(), WarmStart::pair_key(p), impulse_scale,
+                        contacts.points(c));
+    });
   }
 }
 

@@ -3,6 +3,7 @@
 // the step) and where they touch (narrowphase manifolds), as contact constraints carrying the
 // impulses of the previous step for warm starting.
 
+#include <cstdint>
 #include <vector>
 
 #include "engine/collision/body_shapes.hpp"
@@ -45,6 +46,9 @@ class CollisionDetection {
   std::vector<BodyId> body_of_;             // per shape
   std::vector<ShapePair> pairs_;            // the broadphase's, filtered and sorted in place
   std::vector<ContactManifold> manifolds_;  // per pair of a block of find_contacts
+  std::vector<std::uint8_t> counts_;        // per pair of the block: its number of points
+  std::vector<ContactSlot> slots_;          // per pair of the block: where its contact goes
+  std::vector<std::vector<WarmStart>::const_iterator> warm_start_of_;  // per pair of the block
 };
 
 }  // namespace gp

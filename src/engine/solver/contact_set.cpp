@@ -1,28 +1,61 @@
 #include "engine/solver/contact_set.hpp"
 
-#include "engine/capacity.hpp"
-
 namespace gp {
 
+namespace {
+
+// Room for at least `count` entries, grown by an eighth more than asked: grown as contacts come
+// rather than for every candidate pair, of which many make none.
+template <typename T>
+void room_for(std::vector<T>& entries, std::size_t count) {
+  if (entries.size() < count) entries.resize(count + count / 8);
+}
+
+}  // namespace
+
 void ContactSet::clear() {
-  contacts_.clear();
-  points_.clear();
-  blocks_.clear();
+  size_ = 0;
+  point_count_ = 0;
+  block_count_ = 0;
+}
+
+ContactSlot ContactSet::take(std::uint8_t count) {
+  const ContactSlot slot{
+      static_cast<std::uint32_t>(size_++), static_cast<std::uint32_t>(point_count_),
+      count == 2 ? static_cast<std::uint32_t>(block_count_++) : Contact::kNoBlock};
+  point_count_ += count;
+  return slot;
+}
+
+void ContactSet::make_room() {
+  room_for(contacts_, size_);
+  room_for(points_, point_count_);
+  room_for(blocks_, block_count_);
 }
 
 Contact& ContactSet::append(int count) {
-  // Grown as contacts come rather than for every candidate pair, of which many make none.
-  reserve_for(contacts_, contacts_.size() + 1);
-  reserve_for(points_, points_.size() + static_cast<std::size_t>(count));
-  Contact& c = contacts_.emplace_back();
-  c.first_point = static_cast<std::uint32_t>(points_.size());
-  c.block = Contact::kNoBlock;
-  if (count == 2) {
-    reserve_for(blocks_, blocks_.size() + 1);
-    c.block = static_cast<std::uint32_t>(blocks_.size());
-    blocks_.emplace_back();
+  const ContactSlot slot = take(static_cast<std::uint8_t>(count));
+  make_room();
+  return place(slot);
+}
+
+void ContactSet::reserve(std::span<const std::uint8_t> counts, std::span<ContactSlot> slots) {
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    slots[i] = counts[i] == 0 ? ContactSlot{} : take(counts[i]);
   }
-  for (int k = 0; k < count; ++k) points_.emplace_back();
+  make_room();
+}
+
+Contact& ContactSet::place(const ContactSlot& slot) {
+  Contact& c = contacts_[slot.contact];
+  c.shape_a = c.shape_b = 0;
+  c.body_a = c.body_b = 0;
+  c.normal = Vec2::Zero();
+  c.friction = 0.0;
+  c.first_point = slot.first_point;
+  c.block = slot.block;
+  for (ContactPointState& p : points(c)) p = ContactPointState{};
+  if (c.block != Contact::kNoBlock) blocks_[c.block] = NormalBlock{};
   return c;
 }
 

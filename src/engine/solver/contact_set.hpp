@@ -4,6 +4,7 @@
 // memory.
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -11,23 +12,33 @@
 
 namespace gp {
 
+/// Where ContactSet::reserve puts a contact: its index, the index of its first point, and of its
+/// block (Contact::kNoBlock for one point); `contact` is kNone when no contact goes there.
+struct ContactSlot {
+  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  std::uint32_t contact = kNone;
+  std::uint32_t first_point = 0;
+  std::uint32_t block = Contact::kNoBlock;
+};
+
 /// Contacts in the order they were appended (the solvers' order), each with its `count` points
 /// stored one after the other from Contact::first_point, and the normal blocks of the two-point
-/// contacts.
+/// contacts. Its arrays keep their room from step to step: a contact is initialised once, where
+/// it is placed, and on whichever thread places it.
 class ContactSet {
  public:
-  std::size_t size() const { return contacts_.size(); }
-  bool empty() const { return contacts_.empty(); }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
   /// Of all the contacts together.
-  std::size_t point_count() const { return points_.size(); }
+  std::size_t point_count() const { return point_count_; }
   void clear();
 
   Contact& operator[](std::size_t i) { return contacts_[i]; }
   const Contact& operator[](std::size_t i) const { return contacts_[i]; }
   auto begin() { return contacts_.begin(); }
-  auto end() { return contacts_.end(); }
+  auto end() { return contacts_.begin() + static_cast<std::ptrdiff_t>(size_); }
   auto begin() const { return contacts_.begin(); }
-  auto end() const { return contacts_.end(); }
+  auto end() const { return contacts_.begin() + static_cast<std::ptrdiff_t>(size_); }
 
   std::span<ContactPointState> points(const Contact& c) {
     return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
@@ -40,6 +51,13 @@ class ContactSet {
   /// caller fills in the rest.
   Contact& append(int count);
 
+  /// Makes room for a contact per entry of `counts` that is 1 or 2 (its number of points), in
+  /// order after the others, and writes to `slots` where each goes; place then initialises it.
+  void reserve(std::span<const std::uint8_t> counts, std::span<ContactSlot> slots);
+  /// The contact at `slot` (of reserve), with its points and block value-initialised. Contacts
+  /// of different slots may be placed on different threads at once.
+  Contact& place(const ContactSlot& slot);
+
   /// The block of a two-point contact, as set_block left it.
   const NormalBlock& block(const Contact& c) const { return blocks_[c.block]; }
   void set_block(const Contact& c, const NormalBlock& block) { blocks_[c.block] = block; }
@@ -50,7 +68,7 @@ class ContactSet {
     std::size_t kept = 0;
     std::size_t kept_points = 0;
     std::size_t kept_blocks = 0;
-    for (const Contact& c : contacts_) {
+    for (const Contact& c : *this) {
       if (drop(c)) continue;
       Contact moved = c;
       moved.first_point = static_cast<std::uint32_t>(kept_points);
@@ -61,15 +79,22 @@ class ContactSet {
       }
       contacts_[kept++] = moved;
     }
-    contacts_.resize(kept);
-    points_.resize(kept_points);
-    blocks_.resize(kept_blocks);
+    size_ = kept;
+    point_count_ = kept_points;
+    block_count_ = kept_blocks;
   }
 
  private:
+  ContactSlot take(std::uint8_t count);
+  void make_room();
+
+  // Each array's first size_, point_count_ and block_count_ entries are in use; the rest is room.
   std::vector<Contact> contacts_;
   std::vector<ContactPointState> points_;
   std::vector<NormalBlock> blocks_;
+  std::size_t size_ = 0;
+  std::size_t point_count_ = 0;
+  std::size_t block_count_ = 0;
 };
 
 }  // namespace gp
