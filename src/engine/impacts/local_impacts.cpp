@@ -35,37 +35,42 @@ void LocalImpacts::classify(StepContext& ctx) {
                        {ctx.shapes[p.second], start[p.second], end[p.second]}, *ctx.motion,
                        {0.0, ctx.h}, f);
   };
-  // On several threads, the times of impact of a block of pairs apart at a time, each into its
-  // slot, then gathered in the pairs' order, so that they do not depend on the number of threads.
-  const bool alone = one_thread();
-  const auto gather = [&] {
-    apart_times_.resize(apart_.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, apart_.size(), kPairsPerTask),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                          apart_times_[k] = impact_of(apart_[k]);
-                        }
-                      });
-    for (std::size_t k = 0; k < apart_.size(); ++k) {
-      if (apart_times_[k]) pending_.push_back({apart_[k], *apart_times_[k]});
-    }
-    apart_.clear();
-  };
-  // Both lists are sorted by pair: one forward scan finds each pair's contact.
-  auto contact = contacts.begin();
-  for (const ShapePair& p : ctx.pairs) {
+  // The time of impact of pair `p` unless it touches already (the contact solver's then, and no
+  // distance to compute); `contact` is the first contact not before p's, as both lists are sorted
+  // by pair, and moves on past it.
+  const auto time_unless_touching = [&](const ShapePair& p, auto& contact) {
     while (contact != contacts.end() && contact->key() < contact_key(p)) ++contact;
     const bool has_contact = contact != contacts.end() && contact->key() == contact_key(p);
-    // Touching already: the contact solver's, and no distance to compute.
-    if (has_contact && touching(ctx, *contact)) continue;
-    if (alone) {
-      if (const auto tau = impact_of(p)) pending_.push_back({p, *tau});
-      continue;
+    return has_contact && touching(ctx, *contact) ? std::nullopt : impact_of(p);
+  };
+  const std::span<const ShapePair> pairs = ctx.pairs;
+  if (one_thread()) {
+    auto contact = contacts.begin();
+    for (const ShapePair& p : pairs) {
+      if (const auto tau = time_unless_touching(p, contact)) pending_.push_back({p, *tau});
     }
-    apart_.push_back(p);
-    if (apart_.size() == kPairsPerBlock) gather();
+  } else {
+    // On several threads, a block of pairs at a time: each pair's time into its own slot, each
+    // task finding its first contact by bisection; then gathered in the pairs' order, so that
+    // they do not depend on the number of threads.
+    times_.resize(kPairsPerBlock);
+    for (std::size_t first = 0; first < pairs.size(); first += kPairsPerBlock) {
+      const std::size_t size = std::min(kPairsPerBlock, pairs.size() - first);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kPairsPerTask),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          const std::uint64_t key = contact_key(pairs[first + r.begin()]);
+                          auto contact = std::partition_point(
+                              contacts.begin(), contacts.end(),
+                              [key](const Contact& c) { return c.key() < key; });
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                            times_[i] = time_unless_touching(pairs[first + i], contact);
+                          }
+                        });
+      for (std::size_t i = 0; i < size; ++i) {
+        if (times_[i]) pending_.push_back({pairs[first + i], *times_[i]});
+      }
+    }
   }
-  if (!apart_.empty()) gather();
   if (pending_.empty()) return;
   // An impact is resolved at its t_c; its speculative contact must not close the gap before.
   auto impact = pending_.begin();
@@ -99,6 +104,9 @@ bool LocalImpacts::engaged(const StepContext& ctx, const Contact& c) const {
 void LocalImpacts::hand_over(StepContext& ctx) {
   const WorldShapes& start = ctx.world_start;
   ContactSet& speculative = ctx.speculative_contacts;
+  speculative.clear();
+  // Without impacts there is nothing to hand over, and no role is read before the next step's.
+  if (pending_.empty()) return;
   roles_.assign(ctx.dynamic.size(), BodyRole::kFree);
   const auto join = [this, &ctx](BodyId b) {
     if (ctx.dynamic[b]) roles_[b] = BodyRole::kInSolver;
@@ -108,7 +116,6 @@ void LocalImpacts::hand_over(StepContext& ctx) {
     join(c.body_a);
     join(c.body_b);
   }
-  speculative.clear();
   for (bool grew = true; grew;) {
     grew = false;
     std::erase_if(pending_, [&](const Pending& e) {
@@ -126,13 +133,11 @@ void LocalImpacts::hand_over(StepContext& ctx) {
   }
   // The bodies left with impacts are the exact path's alone: a contact of theirs that is not
   // engaged (apart, not closing within the step) is searched for impacts after theirs instead.
-  if (!pending_.empty()) {
-    for (const Pending& e : pending_) {
-      roles_[ctx.shapes[e.pair.first].body] = BodyRole::kWithImpact;
-      roles_[ctx.shapes[e.pair.second].body] = BodyRole::kWithImpact;
-    }
-    drop_contacts_with_impacts(ctx);
+  for (const Pending& e : pending_) {
+    roles_[ctx.shapes[e.pair.first].body] = BodyRole::kWithImpact;
+    roles_[ctx.shapes[e.pair.second].body] = BodyRole::kWithImpact;
   }
+  if (!pending_.empty()) drop_contacts_with_impacts(ctx);
 }
 
 void LocalImpacts::drop_contacts_with_impacts(StepContext& ctx) const {

@@ -78,9 +78,8 @@ class LocalImpacts {
   bool search_after(StepContext& ctx, double tau);
 
   std::vector<Pending> pending_;
-  // classify's pairs apart, and their times of impact, a block at a time.
-  std::vector<ShapePair> apart_;
-  std::vector<std::optional<double>> apart_times_;
+  // classify's times of impact of a block of pairs, on several threads.
+  std::vector<std::optional<double>> times_;
   // Who owns a body's contacts this step, one role per body. A body's contacts follow it: those
   // of a body in the solver are the contact solver's (resting, or impacts handed over as
   // speculative contacts); those of a body with an impact are dropped, as its impacts' search
