@@ -1,0 +1,68 @@
+// Where ContactSet puts contacts: reserve hands out slots in order, as appending one by one would,
+// and a contact placed in reused room starts from zero, against layouts worked out by hand.
+
+#include <array>
+#include <catch2/catch.hpp>
+#include <cstdint>
+
+#include "engine/solver/contact_set.hpp"
+
+TEST_CASE("reserve hands out the slots that appending one by one gives", "[contact_set]") {
+  gp::ContactSet set;
+  set.append(1);
+  // Pairs making 2, none, 1 and 2 points after a one-point contact: contacts 1, 2, 3 with
+  // points from 1, 3 and 4, blocks 0 and 1.
+  const std::array<std::uint8_t, 4> counts{2, 0, 1, 2};
+  std::array<gp::ContactSlot, 4> slots{};
+  set.reserve(counts, slots);
+  CHECK(slots[0].contact == 1);
+  CHECK(slots[0].first_point == 1);
+  CHECK(slots[0].block == 0);
+  CHECK(slots[1].contact == gp::ContactSlot::kNone);
+  CHECK(slots[2].contact == 2);
+  CHECK(slots[2].first_point == 3);
+  CHECK(slots[2].block == gp::Contact::kNoBlock);
+  CHECK(slots[3].contact == 3);
+  CHECK(slots[3].first_point == 4);
+  CHECK(slots[3].block == 1);
+  CHECK(set.size() == 4);
+  CHECK(set.point_count() == 6);
+  // Placed out of order, as threads may: each contact knows its points.
+  for (int i : {3, 0, 2}) set.place(slots[static_cast<std::size_t>(i)]);
+  CHECK(set[1].count() == 2);
+  CHECK(set[2].count() == 1);
+  CHECK(set.points(set[3]).data() == set.points(set[1]).data() + 3);
+}
+
+TEST_CASE("a contact placed in room a cleared contact left starts from zero", "[contact_set]") {
+  gp::ContactSet set;
+  gp::Contact& old = set.append(2);
+  old.body_a = 7;
+  old.friction = 0.5;
+  set.points(old)[1].normal_impulse = 3.0;
+  set.set_block(old, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, true});
+  set.clear();
+  CHECK(set.empty());
+  const gp::Contact& again = set.append(2);
+  CHECK(again.body_a == 0);
+  CHECK(again.friction == 0.0);
+  CHECK(set.points(again)[1].normal_impulse == 0.0);
+  CHECK(set.block(again).k12 == 0.0);
+  CHECK_FALSE(set.block(again).solvable);
+}
+
+TEST_CASE("erase_if keeps the others in order with their points", "[contact_set]") {
+  gp::ContactSet set;
+  for (int count : {2, 1, 2}) {
+    gp::Contact& c = set.append(count);
+    c.body_a = static_cast<gp::BodyId>(set.size());
+    set.points(c)[0].normal_impulse = static_cast<double>(set.size());
+  }
+  set.erase_if([](const gp::Contact& c) { return c.body_a == 2; });
+  REQUIRE(set.size() == 2);
+  CHECK(set.point_count() == 4);
+  CHECK(set[1].body_a == 3);
+  CHECK(set[1].first_point == 2);
+  CHECK(set.points(set[1])[0].normal_impulse == 3.0);
+  CHECK(set.block(set[1]).k11 == 0.0);
+}
