@@ -57,9 +57,9 @@ struct Settings {
   /// against 0.29 m in the contacts' own order. The same on any number of threads either way.
   int coloured_island_contacts = 0;
   /// Islands of more than this many contacts are cut into parts of about this many, by halving
-  /// them across their longer side, so that threads share them: the parts are solved side by side,
-  /// each in the contacts' order, then the contacts between them. 0: never. The same on any number
-  /// of threads either way.
+  /// them where the cut is shorter, so that threads share them: the parts are solved side by
+  /// side, each in the contacts' order, then the contacts between them. 0: never. The same on any
+  /// number of threads either way.
   int island_part_contacts = 4096;
 };
 
