@@ -124,7 +124,7 @@ TEST_CASE("A large island is visited part by part, then the contacts between par
   CHECK(visits(g, {0, 0}) == in_order(8));
 }
 
-TEST_CASE("An island is halved across its longer side, whatever order its bodies come in") {
+TEST_CASE("A chain is halved across its length, whatever order its bodies come in") {
   // The same chain standing upright (body b at (0, b)) and listed from the top: the same parts,
   // found by height, and the same order as along x.
   std::vector<std::pair<gp::BodyId, gp::BodyId>> links{{8, 0}};
@@ -134,6 +134,43 @@ TEST_CASE("An island is halved across its longer side, whatever order its bodies
   // Bodies 8, 7 are at the bottom: parts {8, 7}, {6, 5}, {4, 3}, {2, 1}, contact k joining
   // bodies 9 - k and 8 - k.
   CHECK(visits(g, {3, 0}) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
+}
+
+TEST_CASE("A pyramid is cut between its layers, not through them") {
+  // Box2D's pyramid of 20 rows: row r holds 20 - r unit bodies at x = r / 2 + j, y = r, each
+  // resting on the two below it, touching its neighbours in the row, and row 0 on the ground
+  // (body 0). It is 19 m wide and 19 m tall, but a cut at the median of x passes through every
+  // row, where one at the median of y passes between two: rows 0 to 5 hold 20 + 19 + ... + 15 =
+  // 105 bodies, half of the 210. Halved once, the contacts between the parts are then the
+  // supports of row 6 on row 5, and no contact within a row.
+  constexpr int kRows = 20;
+  std::vector<std::vector<gp::BodyId>> id(kRows);
+  gp::BodyId next = 1;
+  for (int r = 0; r < kRows; ++r) {
+    for (int j = 0; j < kRows - r; ++j) id[r].push_back(next++);
+  }
+  std::vector<std::pair<gp::BodyId, gp::BodyId>> links;
+  std::vector<std::uint32_t> row6_on_row5;
+  for (int r = 0; r < kRows; ++r) {
+    for (int j = 0; j < kRows - r; ++j) {
+      if (r == 0) links.emplace_back(id[r][j], 0);
+      if (j > 0) links.emplace_back(id[r][j], id[r][j - 1]);
+      for (int below : {j, j + 1}) {
+        if (r == 0) continue;
+        if (r == 6) row6_on_row5.push_back(static_cast<std::uint32_t>(links.size()));
+        links.emplace_back(id[r][j], id[r - 1][below]);
+      }
+    }
+  }
+  Graph g(next, links);
+  for (int r = 0; r < kRows; ++r) {
+    for (int j = 0; j < kRows - r; ++j) g.positions[id[r][j]] = {0.5 * r + j, r};
+  }
+  const std::vector<std::uint32_t> order = visits(g, {links.size() / 2, 0});
+  REQUIRE(order.size() == links.size());
+  std::vector<std::uint32_t> last(order.end() - static_cast<std::ptrdiff_t>(row6_on_row5.size()),
+                                  order.end());
+  CHECK(last == row6_on_row5);
 }
 
 TEST_CASE("Colouring an island takes precedence over parting it") {
