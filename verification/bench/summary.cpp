@@ -63,6 +63,7 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
       f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
       f.moved_m = m.moved_m;
       f.heap_bytes = m.heap_bytes;
+      f.bodies = w.scene.bodies.size();
       all.push_back(std::move(f));
     }
   }

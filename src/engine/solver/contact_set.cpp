@@ -8,7 +8,10 @@ namespace {
 // rather than for every candidate pair, of which many make none.
 template <typename T>
 void room_for(std::vector<T>& entries, std::size_t count) {
-  if (entries.size() < count) entries.resize(count + count / 8);
+  if (entries.size() >= count) return;
+  // Reserved first: resize alone would double the capacity.
+  entries.reserve(count + count / 8);
+  entries.resize(count + count / 8);
 }
 
 }  // namespace
