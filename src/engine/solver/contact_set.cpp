@@ -1,5 +1,7 @@
 #include "engine/solver/contact_set.hpp"
 
+#include "engine/capacity.hpp"
+
 namespace gp {
 
 namespace {
@@ -10,8 +12,8 @@ template <typename T>
 void room_for(std::vector<T>& entries, std::size_t count) {
   if (entries.size() >= count) return;
   // Reserved first: resize alone would double the capacity.
-  entries.reserve(count + count / 8);
-  entries.resize(count + count / 8);
+  reserve_for(entries, count);
+  entries.resize(entries.capacity());
 }
 
 }  // namespace
