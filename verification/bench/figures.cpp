@@ -29,11 +29,19 @@ double sample_stddev(const std::vector<double>& v) {
 
 Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
                    double moved_m) {
-  Figures f{w.name, std::move(engine), ms.size()};
-  f.median_ms = median(ms);
-  f.min_ms = *std::min_element(ms.begin(), ms.end());
-  f.max_ms = *std::max_element(ms.begin(), ms.end());
-  f.stddev_ms = sample_stddev(ms);
+  return figures_of(w, std::move(engine), ms.size(),
+                    {median(ms), *std::min_element(ms.begin(), ms.end()),
+                     *std::max_element(ms.begin(), ms.end()), sample_stddev(ms)},
+                    moved_m);
+}
+
+Figures figures_of(const Workload& w, std::string engine, std::size_t repetitions,
+                   const TimeSpread& ms, double moved_m) {
+  Figures f{w.name, std::move(engine), repetitions};
+  f.median_ms = ms.median;
+  f.min_ms = ms.min;
+  f.max_ms = ms.max;
+  f.stddev_ms = ms.stddev;
   f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
   f.moved_m = moved_m;
   f.bodies = w.scene.bodies.size();

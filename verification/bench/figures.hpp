@@ -25,6 +25,14 @@ struct Figures {
   std::size_t bodies = 0;    ///< of the workload's scene
 };
 
+/// Median, min, max and sample standard deviation of repetitions' wall times [ms].
+struct TimeSpread {
+  double median, min, max, stddev;
+};
+
+/// The figures of `repetitions` runs of `w` in `engine` whose wall times spread as `ms`.
+Figures figures_of(const Workload& w, std::string engine, std::size_t repetitions,
+                   const TimeSpread& ms, double moved_m);
 /// The figures of the repetitions of `w` in `engine` that took `ms` (not empty) each.
 Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
                    double moved_m);

@@ -50,20 +50,12 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
       const auto found = by_name.find(w.name + "/" + label);
       if (found == by_name.end()) continue;
       const Measured& m = found->second;
-      if (!m.ms.empty()) {
-        all.push_back(figures_of(w, label, m.ms, m.moved_m));
-        all.back().heap_bytes = m.heap_bytes;
-        continue;
-      }
-      Figures f{w.name, label, static_cast<std::size_t>(m.repetitions)};
-      f.median_ms = m.statistic.at("median");
-      f.min_ms = m.statistic.at("min");
-      f.max_ms = m.statistic.at("max");
-      f.stddev_ms = m.statistic.at("stddev");
-      f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
-      f.moved_m = m.moved_m;
+      Figures f = !m.ms.empty() ? figures_of(w, label, m.ms, m.moved_m)
+                                : figures_of(w, label, static_cast<std::size_t>(m.repetitions),
+                                             {m.statistic.at("median"), m.statistic.at("min"),
+                                              m.statistic.at("max"), m.statistic.at("stddev")},
+                                             m.moved_m);
       f.heap_bytes = m.heap_bytes;
-      f.bodies = w.scene.bodies.size();
       all.push_back(std::move(f));
     }
   }
