@@ -33,6 +33,13 @@ const std::vector<ShapePair>& CollisionDetection::candidate_pairs(const BodyShap
   return pairs_;
 }
 
+std::span<const ShapePair> CollisionDetection::drop_pairs(std::span<const ShapePair> dropped) {
+  std::erase_if(pairs_, [dropped](const ShapePair& p) {
+    return std::find(dropped.begin(), dropped.end(), p) != dropped.end();
+  });
+  return pairs_;
+}
+
 namespace {
 
 // Pairs a thread takes at a time: a manifold costs about a hundred nanoseconds, a task about a

@@ -32,6 +32,9 @@ class CollisionDetection {
                                                 const std::vector<char>& dynamic,
                                                 const WorldShapes& start, const WorldShapes& end);
 
+  /// Removes the pairs in `dropped` from the last candidate pairs, in place; returns those left.
+  std::span<const ShapePair> drop_pairs(std::span<const ShapePair> dropped);
+
   /// The context's contacts: those of its candidate pairs at the start placement and state,
   /// sorted by key; a point whose pair and features were among the warm starts (sorted by key)
   /// starts with their impulses times the warm-start scale.

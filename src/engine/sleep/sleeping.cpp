@@ -6,8 +6,8 @@
 namespace gp {
 
 void wake_island(StepContext& c, BodyId body) {
+  if (!asleep(c, body)) return;
   const std::uint32_t island = c.sleep_island[body];
-  if (island == kAwake) return;
   for (BodyId j = 0; j < c.sleep_island.size(); ++j) {
     if (c.sleep_island[j] != island) continue;
     c.sleep_island[j] = kAwake;

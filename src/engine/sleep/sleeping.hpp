@@ -17,9 +17,9 @@ struct SleepScratch {
   std::vector<double> least_still;  ///< s, per island root
 };
 
-/// Whether `body` sleeps.
+/// Whether `body` sleeps; never in a space without sleeping, which keeps no sleep state.
 inline bool asleep(const StepContext& c, BodyId body) {
-  return c.sleep_island[body] != kAwake;
+  return !c.sleep_island.empty() && c.sleep_island[body] != kAwake;
 }
 
 /// Wakes every body of the island `body` sleeps in; nothing if it is awake.

@@ -95,8 +95,15 @@ void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t
     if (!(cut_length(1) < at_median_x)) order_around_middle(0, first, middle, last);
   }
   // The halves hold different bodies: each is cut on a thread of its own, with the same result.
-  tbb::parallel_invoke([&] { halve_bodies(positions, first, middle, depth - 1, 2 * code); },
-                       [&] { halve_bodies(positions, middle, last, depth - 1, 2 * code + 1); });
+  // On one thread, without handing out tasks, whose pool the heap would keep.
+  const auto lower = [&] { halve_bodies(positions, first, middle, depth - 1, 2 * code); };
+  const auto upper = [&] { halve_bodies(positions, middle, last, depth - 1, 2 * code + 1); };
+  if (one_thread()) {
+    lower();
+    upper();
+  } else {
+    tbb::parallel_invoke(lower, upper);
+  }
 }
 
 void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia,

@@ -1,6 +1,5 @@
 #include "engine/step/stages.hpp"
 
-#include <algorithm>
 #include <array>
 #include <sstream>
 #include <string>
@@ -86,11 +85,7 @@ bool search_impacts(StepContext& c, StepMechanisms& m) {
   if (!tau || *tau >= c.h) return true;
   c.h = *tau;
   c.impact_pairs = m.impact_search.touching();
-  c.contact_pairs.assign(c.pairs.begin(), c.pairs.end());
-  std::erase_if(c.contact_pairs, [&c](const ShapePair& p) {
-    return std::find(c.impact_pairs.begin(), c.impact_pairs.end(), p) != c.impact_pairs.end();
-  });
-  c.pairs = c.contact_pairs;
+  c.pairs = m.detection.drop_pairs(c.impact_pairs);
   return true;
 }
 

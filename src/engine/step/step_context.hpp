@@ -48,15 +48,15 @@ struct StepContext {
   std::optional<Ballistic> motion;     ///< the paths from `start` under its accelerations
 
   // Collisions.
-  WorldShapes world_start, world_end;    ///< the shapes placed at the start and at the end of h
-  std::span<const ShapePair> pairs;      ///< the candidate pairs the contacts are found for
-  std::vector<ShapePair> contact_pairs;  ///< of a sub-step: the candidates but its impact pairs
-  std::vector<ShapePair> impact_pairs;   ///< resolved at the end of the sub-step, at its t_c
-  ContactSet contacts;                   ///< resting and persistent, solved over the sub-step
-  ContactSet speculative_contacts;       ///< impacts on resting bodies, this step only
-  std::vector<WarmStart> warm_starts;    ///< the impulses of the last sub-step's contacts
+  WorldShapes world_start, world_end;   ///< the shapes placed at the start and at the end of h
+  std::span<const ShapePair> pairs;     ///< the candidate pairs the contacts are found for (in a
+                                        ///< sub-step, without its impact pairs)
+  std::vector<ShapePair> impact_pairs;  ///< resolved at the end of the sub-step, at its t_c
+  ContactSet contacts;                  ///< resting and persistent, solved over the sub-step
+  ContactSet speculative_contacts;      ///< impacts on resting bodies, this step only
+  std::vector<WarmStart> warm_starts;   ///< the impulses of the last sub-step's contacts
 
-  // Sleeping (Settings::sleep), per body.
+  // Sleeping (Settings::sleep), per body; empty without it.
   std::vector<double> still_for;            ///< s moved slower than the sleep thresholds
   std::vector<std::uint32_t> sleep_island;  ///< kAwake, or the island the body sleeps in
   BodyInertia asleep_inertia;               ///< what a sleeping body wakes up with
