@@ -179,6 +179,30 @@ TEST_CASE("Sweep and prune sorts afresh when the boxes were shuffled since the l
   CHECK(broadphase.entries_resorted() >= proxies.size());
 }
 
+TEST_CASE("A box sinking a millimetre at every call leaves the bands where they are",
+          "[FR:Determine-Collisions]") {
+  // The bottom of a settling pile, pressed a little deeper into the ground at every step: bands
+  // that started at the lowest bottom itself would be placed, and every entry sorted, anew each
+  // time.
+  std::vector<BroadphaseProxy> proxies = random_unit_boxes(2000, 30.0, 7);
+  const auto lowest = std::min_element(proxies.begin(), proxies.end(),
+                                       [](const BroadphaseProxy& a, const BroadphaseProxy& b) {
+                                         return a.bounds.min.y() < b.bounds.min.y();
+                                       });
+  gp::SweepAndPrune broadphase(0.0);
+  pairs_found(broadphase, proxies);
+  int sorted_afresh = 0;
+  for (int call = 0; call < 100; ++call) {
+    lowest->bounds.min.y() -= 0.001;
+    lowest->bounds.max.y() -= 0.001;
+    const std::vector<ShapePair> found = sorted(pairs_found(broadphase, proxies));
+    INFO("call " << call);
+    REQUIRE(found == all_overlapping_pairs(proxies, 0.0));
+    if (broadphase.entries_resorted() >= proxies.size()) ++sorted_afresh;
+  }
+  CHECK(sorted_afresh == 0);
+}
+
 TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Collisions]") {
   // All boxes share one x interval, so a sweep along x alone would compare every pair.
   std::vector<BroadphaseProxy> proxies{box_proxy({0.0, -0.5}, {20.0, 1.0}, true)};

@@ -88,10 +88,12 @@ template <typename Boxes>
 void SweepAndPrune::place_bands(const Boxes& boxes, const Survey& survey) {
   if (bands_suit(boxes.size(), survey)) return;
   forget();
-  // Bands start at the lowest grown bottom. Bands above the highest bottom hold no overlap's
+  // Bands start a quarter of a band below the lowest grown bottom: a body pressed a little deeper
+  // into the ground at every step (the bottom of a settling pile) would otherwise move the bands,
+  // and sort every entry afresh, at every step. Bands above the highest bottom hold no overlap's
   // bottom, so no box needs entries there.
-  band_origin_ = survey.lowest;
   band_height_ = ideal_band_height(boxes, survey.highest - survey.lowest);
+  band_origin_ = survey.lowest - 0.25 * band_height_;
 }
 
 bool SweepAndPrune::bands_suit(std::size_t count, const Survey& survey) const {
