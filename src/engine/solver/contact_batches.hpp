@@ -57,13 +57,13 @@ class ContactBatches {
 
   /// Groups `contacts`, whose bodies are at `positions` [m, by body id], into stages of tasks.
   /// First stage: each island not cut, and each part of the cut ones. An island to part is halved
-  /// at the median of its bodies' places along x or y, whichever cut is shorter (the spread across
-  /// it of the tenth of the bodies nearest the median), and each half again, until the
-  /// parts have at most about `splitting.parted_above` contacts; a contact between two parts
-  /// joins the smallest group of parts holding both. Second stage: per cut island, one task of
-  /// its contacts between parts, group by group from the smallest up. Last stages: each colour
-  /// of the coloured islands, one task per contact. No two tasks of a stage share a body that
-  /// the solver moves. Reuses its arrays' room.
+  /// at the median of its bodies' places along x or y, whichever cut is shorter (the spread along
+  /// it, through their centre, of the bodies within a twentieth of their extent of it), and each
+  /// half again, until the parts have at most about `splitting.parted_above` contacts; a contact
+  /// between two parts joins the smallest group of parts holding both. Second stage: per cut
+  /// island, one task of its contacts between parts, group by group from the smallest up. Last
+  /// stages: each colour of the coloured islands, one task per contact. No two tasks of a stage
+  /// share a body that the solver moves. Reuses its arrays' room.
   void build(const ContactSet& contacts, const BodyInertia& inertia,
              std::span<const Vec2> positions, const IslandSplitting& splitting);
 
