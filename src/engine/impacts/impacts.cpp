@@ -119,6 +119,8 @@ std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, cons
   if (a.at_t0.bounds.gap_to(b.at_t0.bounds) > 2.0 * reach + kRoundOff) return std::nullopt;
   const double d0 = signed_distance(a.at_t0, b.at_t0);
   if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
+  // The same for the shapes themselves, which turned polygons leave further apart than their boxes.
+  if (d0 > 2.0 * reach + kRoundOff) return std::nullopt;
   const double d1 = signed_distance(a.at_h, b.at_h);
   if (d0 < filter.margin && d0 - d1 < filter.min_speed * (window.h - window.t0)) {
     return std::nullopt;
