@@ -3,7 +3,7 @@
 # summary and fails when line coverage of models/ plus src/ is under 90%; then builds with
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ and runs ctest again, where
 # any sanitizer report fails the run; then builds the libFuzzer target over the scene loader with
-# clang in build-fuzz/ and fuzzes it with 100000 inputs (30 to 90 s), where a crash, a hang, a
+# clang in build-fuzz/ and fuzzes it with 100000 inputs (about 3 min), where a crash, a hang, a
 # leak or a sanitizer report fails the run (verification/fuzz/README.md).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -27,7 +27,7 @@ cmake --build build-fuzz --target gamephysics_fuzz_scene -j2
 mkdir -p build-fuzz/corpus build-fuzz/artifacts
 # Seeds: the bad inputs of the tests, the crash inputs found so far and the shipped scenes; new
 # inputs go to build-fuzz/corpus, a failing one to build-fuzz/artifacts/. A fixed seed and number
-# of inputs (30 to 90 s here), so that clean checkouts fuzz much the same inputs (README); the time
+# of inputs (about 3 min here), so that clean checkouts fuzz much the same inputs (README); the time
 # limit only guards against a much slower machine. The log is long: its end is printed, with the
 # failure's report when there is one.
 if ! build-fuzz/bin/gamephysics_fuzz_scene -seed=1 -runs=100000 -max_total_time=300 -timeout=5 \
