@@ -65,8 +65,9 @@ void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t
   // At the median along x or y, whichever cut is shorter, so that it meets fewer contacts and
   // the halves' bodies mix less in memory: between a pile's layers rather than through them all.
   // A cut's length is taken through the bodies' centre: the spread, along the cut, of the bodies
-  // within a twentieth of their extent of it. Two passes find it, where ranking the bodies about
-  // each median took six selections. On a tie, or a length that is not a number, along x.
+  // within a twentieth of their extent of it, which two linear passes find (ranking the bodies
+  // about each median would take selections, costly in mispredicted branches). On a tie, or a
+  // length that is not a number, along x.
   if (last - first > 1) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     Vec2 sum = Vec2::Zero();
