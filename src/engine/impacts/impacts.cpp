@@ -110,17 +110,18 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
 
 std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
                                   const StepWindow& window, const ImpactFilter& filter) {
-  // Boxes further apart than the pair can close over the window cannot touch in it, and need no
-  // distance computed. Twice that and a nanometre, so that no round-off in the distances could
-  // have let the search below find a touch: the result is the same with or without this test.
+  // Shapes further apart than the pair can close over the window cannot touch in it. Twice that
+  // and a nanometre, so that no round-off in the distances could have let the search below find a
+  // touch: the result is the same with or without these tests. Their boxes' gap is tested first,
+  // needing no distance computed; then the distance, which turned polygons leave wider.
   constexpr double kRoundOff = 1e-9;  // m
   const double reach =
       closing_speed_bound(a.shape, b.shape, motion, window.h) * (window.h - window.t0);
-  if (a.at_t0.bounds.gap_to(b.at_t0.bounds) > 2.0 * reach + kRoundOff) return std::nullopt;
+  const double out_of_reach = 2.0 * reach + kRoundOff;
+  if (a.at_t0.bounds.gap_to(b.at_t0.bounds) > out_of_reach) return std::nullopt;
   const double d0 = signed_distance(a.at_t0, b.at_t0);
   if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
-  // The same for the shapes themselves, which turned polygons leave further apart than their boxes.
-  if (d0 > 2.0 * reach + kRoundOff) return std::nullopt;
+  if (d0 > out_of_reach) return std::nullopt;
   const double d1 = signed_distance(a.at_h, b.at_h);
   if (d0 < filter.margin && d0 - d1 < filter.min_speed * (window.h - window.t0)) {
     return std::nullopt;
