@@ -62,6 +62,10 @@ Settings read_settings(const JsonObject& root) {
       root.get_or<double>("velocity_tolerance", settings.velocity_tolerance);
   settings.direct_solve_points =
       root.get_or<int>("direct_solve_points", settings.direct_solve_points);
+  settings.direct_solve_uneven_points =
+      root.get_or<int>("direct_solve_uneven_points", settings.direct_solve_uneven_points);
+  settings.direct_solve_mass_ratio =
+      root.get_or<double>("direct_solve_mass_ratio", settings.direct_solve_mass_ratio);
   settings.restitution_threshold =
       root.get_or<double>("restitution_threshold", settings.restitution_threshold);
   settings.sleep = root.get_or<bool>("sleep", settings.sleep);
@@ -126,11 +130,27 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
   nlohmann::json document = parse_json_document(text);
   apply(overrides, document);
   const JsonObject root(document, "");
-  root.allow_only({"description", "gravity", "G", "integrator", "dt", "duration", "output_dt",
-                   "velocity_iterations", "velocity_tolerance", "direct_solve_points",
-                   "position_iterations", "restitution_threshold", "sleep", "sleep_speed",
-                   "sleep_angular_speed", "time_to_sleep", "coloured_island_contacts",
-                   "island_part_contacts", "bodies"});
+  root.allow_only({"description",
+                   "gravity",
+                   "G",
+                   "integrator",
+                   "dt",
+                   "duration",
+                   "output_dt",
+                   "velocity_iterations",
+                   "velocity_tolerance",
+                   "direct_solve_points",
+                   "direct_solve_uneven_points",
+                   "direct_solve_mass_ratio",
+                   "position_iterations",
+                   "restitution_threshold",
+                   "sleep",
+                   "sleep_speed",
+                   "sleep_angular_speed",
+                   "time_to_sleep",
+                   "coloured_island_contacts",
+                   "island_part_contacts",
+                   "bodies"});
   root.get_optional<std::string>("description");  // for the reader of the file: type only
   Scene scene;
   scene.settings = read_settings(root);

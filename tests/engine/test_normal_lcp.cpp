@@ -96,8 +96,10 @@ TEST_CASE("No points is solved at once, and a point no body can move is not solv
                   .solved);
 }
 
-TEST_CASE("Random heaps' contact problems are all solved, most within the engine's round limit",
-          "[via:GD:impulse][FR:Determine-Collision-Response-Over-Time]") {
+TEST_CASE(
+    "Random heaps' contact problems are all solved, dense and sparse, most within the engine's "
+    "round limit",
+    "[via:GD:impulse][FR:Determine-Collision-Response-Over-Time]") {
   // K = J M⁻¹ Jᵀ, as an island's effective-mass matrix is, for 2 to 4 points a body, each
   // between two random bodies or a body and the ground, with normals within 17° of upwards and
   // random arms; w₀ = J v for random velocities falling under a step of gravity; random warm
@@ -149,6 +151,13 @@ TEST_CASE("Random heaps' contact problems are all solved, most within the engine
         INFO(bodies << " bodies, " << n << " points, trial " << trial);
         REQUIRE(result.solved);
         check_complementary(k, w0, start, impulse);
+        // The sparse solve, in its fill-reducing order, meets the same conditions.
+        gp::NormalLcpScratch sparse_scratch;
+        Eigen::VectorXd sparse_impulse(n);
+        REQUIRE(
+            gp::solve_normal_lcp(k.sparseView(), w0, start, sparse_scratch, sparse_impulse, 5000)
+                .solved);
+        check_complementary(k, w0, start, sparse_impulse);
         within_limit += result.rounds <= gp::kNormalLcpMaxRounds;
       }
     }

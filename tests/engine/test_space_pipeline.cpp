@@ -87,7 +87,7 @@ TEST_CASE("Colliding discs and G bring in their stages with their SRS ids",
   CHECK(mentions(stages, "integration", "2 of them rotating"));
   CHECK(has(stages, "broadphase"));
   CHECK(has(stages, "time of impact"));
-  CHECK(has(stages, "contact solver: small islands solved directly"));
+  CHECK(has(stages, "contact solver: islands solved directly"));
   // Turned off, the direct solve is not run and not listed.
   settings.direct_solve_points = 0;
   gp::Space sequential(settings);

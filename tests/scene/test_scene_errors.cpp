@@ -113,6 +113,7 @@ TEST_CASE("Unknown fields are rejected at every level", "[FR:Verify-Physical_Con
   check_error(R"({"gravty": [0, -9.81], "dt": 0.01, "duration": 1, "bodies": []})", "gravty",
               "is not a known field (known: description, gravity, G, integrator, dt, duration, "
               "output_dt, velocity_iterations, velocity_tolerance, direct_solve_points, "
+              "direct_solve_uneven_points, direct_solve_mass_ratio, "
               "position_iterations, restitution_threshold, sleep, sleep_speed, "
               "sleep_angular_speed, time_to_sleep, coloured_island_contacts, island_part_contacts, "
               "bodies)",
@@ -230,8 +231,15 @@ TEST_CASE("Settings are checked", "[FR:Verify-Physical_Constraints]") {
               "coloured_island_contacts", "must be >= 0 (0: never)", "-1");
   check_error(R"({"island_part_contacts": -2, "dt": 0.01, "duration": 1, "bodies": []})",
               "island_part_contacts", "must be >= 0 (0: never)", "-2");
-  check_error(R"({"direct_solve_points": 300, "dt": 0.01, "duration": 1, "bodies": []})",
-              "direct_solve_points", "must be in [0, 256]", "300");
+  // The direct solve's settings: setting, rule, value.
+  const std::string direct_solve[][3] = {
+      {"direct_solve_points", "must be in [0, 1024]", "2000"},
+      {"direct_solve_uneven_points", "must be in [0, 1024]", "-1"},
+      {"direct_solve_mass_ratio", "must be >= 1 (heaviest over lightest)", "0.5"}};
+  for (const auto& [setting, rule, value] : direct_solve) {
+    check_error("{\"" + setting + "\": " + value + R"(, "dt": 0.01, "duration": 1, "bodies": []})",
+                setting, rule, value);
+  }
   check_error(R"({"velocity_tolerance": -1e-5, "dt": 0.01, "duration": 1, "bodies": []})",
               "velocity_tolerance", "must be >= 0", "-1.0000000000000001e-05");
   check_error(R"({"velocity_iterations": -1, "dt": 0.01, "duration": 1, "bodies": []})",

@@ -30,6 +30,8 @@ Scene bounded(Scene scene, const SceneInputLimits& limits) {
   settings.velocity_iterations = std::min(settings.velocity_iterations, limits.max_passes);
   settings.position_iterations = std::min(settings.position_iterations, limits.max_passes);
   settings.direct_solve_points = std::min(settings.direct_solve_points, limits.max_direct_points);
+  settings.direct_solve_uneven_points =
+      std::min(settings.direct_solve_uneven_points, limits.max_direct_points);
   return scene;
 }
 

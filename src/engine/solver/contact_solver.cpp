@@ -22,7 +22,11 @@ void ContactSolver::prepare(StepContext& c) {
 }
 
 void ContactSolver::solve_small_islands(StepContext& c) {
-  gp::solve_small_islands(c.contacts, batches_.islands(), c.inertia, c.settings.direct_solve_points,
+  const Settings& settings = c.settings;
+  gp::solve_small_islands(c.contacts, batches_.islands(), c.inertia,
+                          {static_cast<std::size_t>(settings.direct_solve_points),
+                           static_cast<std::size_t>(settings.direct_solve_uneven_points),
+                           settings.direct_solve_mass_ratio},
                           c.state, islands_);
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The contact solver's stages over a sub-step, on the step context: effective masses and warm
-// start, the direct solve of small islands, the sequential-impulse passes, the bounce, the
+// start, the direct solve of islands, the sequential-impulse passes, the bounce, the
 // displacement of the impulses, the impacts handed over as speculative contacts, and the position
-// passes. It owns their scratch, so that a warmed-up step allocates nothing, and the order of
-// the contacts' passes (ContactBatches), which run on the threads of the current task arena.
+// passes. It owns their scratch, so that a warmed-up step allocates nothing (but in the sparse
+// solve of an uneven island over 64 points), and the order of the contacts' passes
+// (ContactBatches), which run on the threads of the current task arena.
 
 #include "engine/solver/contact_batches.hpp"
 #include "engine/solver/island_solver.hpp"
@@ -19,7 +20,8 @@ class ContactSolver {
   /// Each point's effective masses, target and bounce (prepare_contacts, from the start state),
   /// then the impulses carried over from the last sub-step applied to the velocities.
   void prepare(StepContext& c);
-  /// The islands of at most Settings::direct_solve_points points, solved at once.
+  /// The islands of at most Settings::direct_solve_points points, or of at most
+  /// direct_solve_uneven_points of uneven masses, solved at once.
   void solve_small_islands(StepContext& c);
   /// Sequential impulses until a pass changes no velocity by more than the tolerance.
   void solve_velocities(StepContext& c);

@@ -1,19 +1,18 @@
 #include "engine/solver/island_solver.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace gp {
 
 namespace {
 
-// The normal impulses of the island of scratch.rows into scratch.impulse (solve_normal_lcp).
-// Returns false where that finds none.
-bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const MotionState& s,
-                  IslandScratch& scratch) {
+// K of the island of scratch.rows, dense, into scratch.k_dense: every entry, each from the bodies
+// its two points share (normal_coupling).
+void assemble_dense(const ContactSet& contacts, const BodyInertia& inertia,
+                    IslandScratch& scratch) {
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
-  auto k = scratch.k.topLeftCorner(n, n);
-  auto w0 = scratch.residual.head(n);
-  auto start = scratch.initial.head(n);
+  auto k = scratch.k_dense.topLeftCorner(n, n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Contact& ci = contacts[scratch.rows[i].contact];
     const ContactPointState& pi = contacts.points(ci)[scratch.rows[i].point];
@@ -22,38 +21,130 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const 
       k(i, j) = k(j, i) =
           normal_coupling(ci, pi, cj, contacts.points(cj)[scratch.rows[j].point], inertia);
     }
-    w0(i) = contact_normal_velocity(s, ci, pi) - pi.target_normal_velocity;
-    start(i) = pi.normal_impulse;
   }
-  return solve_normal_lcp(k, w0, start, scratch.lcp, scratch.impulse.head(n)).solved;
+}
+
+// K of the island of scratch.rows, sparse, into scratch.k_sparse: each movable body adds its share
+// to the entries of every two points on it (body_coupling), so that K holds only what bodies
+// share.
+void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
+                     IslandScratch& scratch) {
+  scratch.ends.clear();
+  for (std::uint32_t i = 0; i < scratch.rows.size(); ++i) {
+    const Contact& c = contacts[scratch.rows[i].contact];
+    const ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
+    if (movable(inertia, c.body_a)) scratch.ends.push_back({c.body_a, i, 1.0, p.normal_arm_a});
+    if (movable(inertia, c.body_b)) scratch.ends.push_back({c.body_b, i, -1.0, p.normal_arm_b});
+  }
+  std::sort(scratch.ends.begin(), scratch.ends.end(),
+            [](const IslandScratch::End& e, const IslandScratch::End& f) {
+              return e.body != f.body ? e.body < f.body : e.row < f.row;
+            });
+  scratch.entries.clear();
+  const auto normal = [&](const IslandScratch::End& e) -> const Vec2& {
+    return contacts[scratch.rows[e.row].contact].normal;
+  };
+  for (auto first = scratch.ends.begin(); first != scratch.ends.end();) {
+    const BodyId body = first->body;
+    const auto last = std::find_if(first, scratch.ends.end(),
+                                   [&](const IslandScratch::End& e) { return e.body != body; });
+    for (auto e = first; e != last; ++e) {
+      for (auto f = first; f != last; ++f) {
+        scratch.entries.emplace_back(
+            e->row, f->row,
+            e->sign * f->sign *
+                body_coupling(inertia.inverse_mass[body], inertia.inverse_moment[body],
+                              normal(*e).dot(normal(*f)), e->arm, f->arm));
+      }
+    }
+    first = last;
+  }
+  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
+  scratch.k_sparse.resize(n, n);
+  scratch.k_sparse.setFromTriplets(scratch.entries.begin(), scratch.entries.end());
+}
+
+// The normal impulses of the island of scratch.rows into scratch.impulse (solve_normal_lcp, in at
+// most `max_rounds` rounds). Returns false where that finds none.
+bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const MotionState& s,
+                  int max_rounds, IslandScratch& scratch) {
+  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
+  auto w0 = scratch.residual.head(n);
+  auto start = scratch.initial.head(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Contact& c = contacts[scratch.rows[i].contact];
+    const ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
+    w0(i) = contact_normal_velocity(s, c, p) - p.target_normal_velocity;
+    start(i) = p.normal_impulse;
+  }
+  const auto impulse = scratch.impulse.head(n);
+  if (n <= kDenseIslandPoints) {
+    assemble_dense(contacts, inertia, scratch);
+    return solve_normal_lcp(scratch.k_dense.topLeftCorner(n, n), w0, start, scratch.lcp, impulse,
+                            max_rounds)
+        .solved;
+  }
+  assemble_sparse(contacts, inertia, scratch);
+  return solve_normal_lcp(scratch.k_sparse, w0, start, scratch.lcp, impulse, max_rounds).solved;
+}
+
+// Whether the island of `contacts` at `islands.order[first, last)` has a dynamic body more than
+// `mass_ratio` times as heavy as another.
+bool uneven(const ContactSet& contacts, const ContactIslands& islands, std::uint32_t first,
+            std::uint32_t last, const BodyInertia& inertia, double mass_ratio) {
+  double lightest = 0.0;  // as inverse masses [1/kg]
+  double heaviest = std::numeric_limits<double>::infinity();
+  for (std::uint32_t e = first; e < last; ++e) {
+    const Contact& c = contacts[islands.order[e]];
+    for (const BodyId b : {c.body_a, c.body_b}) {
+      const double inverse_mass = inertia.inverse_mass[b];
+      if (inverse_mass == 0.0) continue;
+      lightest = std::max(lightest, inverse_mass);
+      heaviest = std::min(heaviest, inverse_mass);
+    }
+  }
+  return lightest > mass_ratio * heaviest;
 }
 
 }  // namespace
 
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
-                        const BodyInertia& inertia, std::size_t max_points, MotionState& s,
+                        const BodyInertia& inertia, const DirectSolveLimits& limits, MotionState& s,
                         IslandScratch& scratch) {
-  if (contacts.empty() || max_points == 0) return 0;
-  const auto size = static_cast<Eigen::Index>(max_points);
-  if (scratch.k.rows() < size) {
-    scratch.k.resize(size, size);
+  const std::size_t most = std::max(limits.points, limits.uneven_points);
+  if (contacts.empty() || limits.points == 0) return 0;
+  const auto size = static_cast<Eigen::Index>(most);
+  if (scratch.residual.size() < size) {
+    const Eigen::Index dense = std::min<Eigen::Index>(size, kDenseIslandPoints);
+    scratch.k_dense.resize(dense, dense);
     scratch.residual.resize(size);
     scratch.initial.resize(size);
     scratch.impulse.resize(size);
-    scratch.rows.reserve(max_points);
+    scratch.rows.reserve(most);
     scratch.lcp.reserve(size);
   }
   int solved = 0;
   const std::size_t bodies = inertia.inverse_mass.size();
   for (std::size_t r = 0; r < bodies; ++r) {
-    if (islands.points[r] == 0 || islands.points[r] > max_points) continue;
+    const std::size_t points = islands.points[r];
+    if (points == 0 || points > most) continue;
+    // An island let in by its uneven masses, which sequential impulses cannot hold up, is worth
+    // more rounds than one they can.
+    const bool let_in_uneven = points > limits.points;
+    if (let_in_uneven && !uneven(contacts, islands, islands.island_start[r], islands.island_end[r],
+                                 inertia, limits.mass_ratio)) {
+      continue;
+    }
     scratch.rows.clear();
     for (std::uint32_t e = islands.island_start[r]; e < islands.island_end[r]; ++e) {
       for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
         scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
       }
     }
-    if (!solve_island(contacts, inertia, s, scratch)) continue;
+    if (!solve_island(contacts, inertia, s,
+                      let_in_uneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds, scratch)) {
+      continue;
+    }
     ++solved;
     for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
       const Contact& c = contacts[scratch.rows[i].contact];

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "engine/solver/contact_islands.hpp"
 #include "engine/solver/normal_lcp.hpp"
@@ -16,23 +17,51 @@
 
 namespace gp {
 
-/// Scratch for solve_small_islands, kept by the caller so that a step does not allocate once it
-/// has grown to the scene.
+/// Islands of up to this many points take a dense K, solved without allocating once the scratch
+/// has grown; larger ones a sparse K, which allocates as Eigen's sparse Cholesky does: a dense
+/// round costs the cube of the points, 8 Mflop at 292.
+inline constexpr Eigen::Index kDenseIslandPoints = 64;
+
+/// Scratch for solve_small_islands, kept by the caller so that a step reuses the room of the
+/// last.
 struct IslandScratch {
   struct Row {
     std::uint32_t contact;
     std::uint32_t point;
   };
-  std::vector<Row> rows;     // the island's points
-  Eigen::MatrixXd k;         // 1/kg: effective-mass matrix of the island's points
+  // A point's end on one of its movable bodies: its place in K's rows, and its sign (A +, B −)
+  // and arm crossed with the normal [m] there.
+  struct End {
+    BodyId body;
+    std::uint32_t row;
+    double sign;
+    double arm;
+  };
+  std::vector<Row> rows;  // the island's points
+  // 1/kg: effective-mass matrix of the island's points, dense for an island of at most
+  // kDenseIslandPoints, else sparse (from its entries, body by body).
+  Eigen::MatrixXd k_dense;
+  std::vector<End> ends;  // the points' ends, by body
+  std::vector<Eigen::Triplet<double>> entries;
+  SparseK k_sparse;
   Eigen::VectorXd residual;  // m/s: w₀, each point's normal velocity less its target
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
   Eigen::VectorXd impulse;   // N·s: λ, the solution
   NormalLcpScratch lcp;
 };
 
+/// Which islands solve_small_islands solves: those of at most `points` contact points, and those
+/// of at most `uneven_points` whose heaviest dynamic body is more than `mass_ratio` times as heavy
+/// as their lightest (Settings::direct_solve_points, direct_solve_uneven_points and
+/// direct_solve_mass_ratio); none when `points` is 0.
+struct DirectSolveLimits {
+  std::size_t points;
+  std::size_t uneven_points;
+  double mass_ratio;
+};
+
 /// For each of the `islands` of `contacts` (contacts joined through the dynamic bodies they share)
-/// of at most `max_points` contact points, sets the points' normal impulses λ to the solution of
+/// within `limits`, sets the points' normal impulses λ to the solution of
 ///   w = w₀ + K (λ − λ₀) ≥ 0,  λ ≥ 0,  λ · w = 0
 /// where w is each point's normal velocity less its target, w₀ and λ₀ the current ones, and K
 /// the effective-mass matrix of the points (GD:impulse's denominators on its diagonal), with the
@@ -42,7 +71,7 @@ struct IslandScratch {
 /// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). Returns the
 /// number of islands solved.
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
-                        const BodyInertia& inertia, std::size_t max_points, MotionState& s,
+                        const BodyInertia& inertia, const DirectSolveLimits& limits, MotionState& s,
                         IslandScratch& scratch);
 
 }  // namespace gp

@@ -96,7 +96,9 @@ double normal_coupling(const Contact& ci, const ContactPointState& pi, const Con
                        const ContactPointState& pj, const BodyInertia& m) {
   const double directions = ci.normal.dot(cj.normal);
   const auto shared = [&](BodyId bi, double arm_i, BodyId bj, double arm_j) {
-    return bi == bj ? m.inverse_mass[bi] * directions + m.inverse_moment[bi] * arm_i * arm_j : 0.0;
+    return bi == bj
+               ? body_coupling(m.inverse_mass[bi], m.inverse_moment[bi], directions, arm_i, arm_j)
+               : 0.0;
   };
   return shared(ci.body_a, pi.normal_arm_a, cj.body_a, pj.normal_arm_a) -
          shared(ci.body_a, pi.normal_arm_a, cj.body_b, pj.normal_arm_b) -

@@ -16,6 +16,16 @@
 
 namespace gp {
 
+/// One body's share of an entry K_ij of the effective-mass matrix of contact points [1/kg], for a
+/// body of inverse mass `inverse_mass` [1/kg] and inverse moment `inverse_moment` [1/(kg·m²)] in
+/// both points: the change of point i's v_rel·n through that body per unit normal impulse at point
+/// j, (n_i·n_j)/m + (r_i × n_i)(r_j × n_j)/I (DD:impulseV, DD:torque, DD:chaslesThm), where
+/// `directions` is n_i·n_j and `arm_i`, `arm_j` [m] are r × n, before the signs of A and B.
+inline double body_coupling(double inverse_mass, double inverse_moment, double directions,
+                            double arm_i, double arm_j) {
+  return inverse_mass * directions + inverse_moment * arm_i * arm_j;
+}
+
 /// An entry K_ij of the effective-mass matrix of contact points [1/kg]: the change of point i's
 /// v_rel·n per unit normal impulse at point j, summed over the bodies the two points share, A
 /// counting + and B − (GD:impulse's denominator when i = j).

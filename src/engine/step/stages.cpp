@@ -230,13 +230,16 @@ constexpr std::array kStages{
             return std::string("effective masses, targets and bounces; last impulses carried over");
           },
           on_contacts<&ContactSolver::prepare>},
-    Stage{"contact solver: small islands solved directly",
+    Stage{"contact solver: islands solved directly",
           "FR:Determine-Collision-Response-Over-Time GD:impulse DD:impulseV TM:NewtonThirdLawMot",
           kLocalPass | kSubStepPass, solves_islands,
           [](const StepContext& c) {
-            return "normal impulses of islands of at most " +
-                   std::to_string(c.settings.direct_solve_points) +
-                   " points, all at once (active set)";
+            std::ostringstream text;
+            text << "normal impulses of islands of at most " << c.settings.direct_solve_points
+                 << " points, or " << c.settings.direct_solve_uneven_points
+                 << " where masses differ more than " << c.settings.direct_solve_mass_ratio
+                 << "-fold, all at once (active set)";
+            return text.str();
           },
           on_contacts<&ContactSolver::solve_small_islands>},
     Stage{"contact solver: sequential impulses",
