@@ -42,9 +42,15 @@ void apply(const SceneOverrides& overrides, nlohmann::json& document) {
   if (overrides.output_dt) document["output_dt"] = *overrides.output_dt;
 }
 
+/// `field` from the root's `key`, left as it is when the key is left out.
+template <typename T>
+void read_setting(const JsonObject& root, const char* key, T& field) {
+  field = root.get_or<T>(key, field);
+}
+
 Settings read_settings(const JsonObject& root) {
   Settings settings;
-  settings.gravity = root.get_or<Vec2>("gravity", settings.gravity);
+  read_setting(root, "gravity", settings.gravity);
   settings.G = root.get_optional<double>("G");
   if (const auto name = root.get_optional<std::string>("integrator")) {
     const auto kind = integrator_from_name(*name);
@@ -54,29 +60,20 @@ Settings read_settings(const JsonObject& root) {
     }
     settings.integrator = *kind;
   }
-  settings.velocity_iterations =
-      root.get_or<int>("velocity_iterations", settings.velocity_iterations);
-  settings.position_iterations =
-      root.get_or<int>("position_iterations", settings.position_iterations);
-  settings.velocity_tolerance =
-      root.get_or<double>("velocity_tolerance", settings.velocity_tolerance);
-  settings.direct_solve_points =
-      root.get_or<int>("direct_solve_points", settings.direct_solve_points);
-  settings.direct_solve_uneven_points =
-      root.get_or<int>("direct_solve_uneven_points", settings.direct_solve_uneven_points);
-  settings.direct_solve_mass_ratio =
-      root.get_or<double>("direct_solve_mass_ratio", settings.direct_solve_mass_ratio);
-  settings.restitution_threshold =
-      root.get_or<double>("restitution_threshold", settings.restitution_threshold);
-  settings.sleep = root.get_or<bool>("sleep", settings.sleep);
-  settings.sleep_speed = root.get_or<double>("sleep_speed", settings.sleep_speed);
-  settings.sleep_angular_speed =
-      root.get_or<double>("sleep_angular_speed", settings.sleep_angular_speed);
-  settings.time_to_sleep = root.get_or<double>("time_to_sleep", settings.time_to_sleep);
-  settings.coloured_island_contacts =
-      root.get_or<int>("coloured_island_contacts", settings.coloured_island_contacts);
-  settings.island_part_contacts =
-      root.get_or<int>("island_part_contacts", settings.island_part_contacts);
+  read_setting(root, "velocity_iterations", settings.velocity_iterations);
+  read_setting(root, "position_iterations", settings.position_iterations);
+  read_setting(root, "velocity_tolerance", settings.velocity_tolerance);
+  read_setting(root, "direct_solve_points", settings.direct_solve_points);
+  read_setting(root, "direct_solve_uneven_points", settings.direct_solve_uneven_points);
+  read_setting(root, "direct_solve_mass_ratio", settings.direct_solve_mass_ratio);
+  read_setting(root, "direct_solve_resting_points", settings.direct_solve_resting_points);
+  read_setting(root, "restitution_threshold", settings.restitution_threshold);
+  read_setting(root, "sleep", settings.sleep);
+  read_setting(root, "sleep_speed", settings.sleep_speed);
+  read_setting(root, "sleep_angular_speed", settings.sleep_angular_speed);
+  read_setting(root, "time_to_sleep", settings.time_to_sleep);
+  read_setting(root, "coloured_island_contacts", settings.coloured_island_contacts);
+  read_setting(root, "island_part_contacts", settings.island_part_contacts);
   validate_settings(settings);
   return settings;
 }
@@ -142,6 +139,7 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
                    "direct_solve_points",
                    "direct_solve_uneven_points",
                    "direct_solve_mass_ratio",
+                   "direct_solve_resting_points",
                    "position_iterations",
                    "restitution_threshold",
                    "sleep",

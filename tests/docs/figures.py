@@ -188,6 +188,8 @@ def rise_after_first_bounce(runner):
 
 
 SEQUENTIAL = {"direct_solve_points": 0}
+# The passes alone above 64 points: no exact solve of a resting island's first step.
+UNSEEDED = {"direct_solve_resting_points": 0, "duration": 3.0}
 
 
 def top_box(runner, patch, t):
@@ -310,12 +312,15 @@ def registry():
             "oracle of scenes/orbit.json against the exact circle",
             lambda r: orbit_error_exact(r, r.oracle("orbit"))),
         # lesson 6: pyramid20's boxes are 1 kg, I = 1/6 kg·m²
-        "tutorial.pyramid.ke_0.5s": Computed(
-            simulate.format("pyramid20"),
-            lambda r: kinetic_energy(r.simulate("pyramid20", {"duration": 3.0}), 0.5, 1.0, 1 / 6)),
-        "tutorial.pyramid.ke_3s": Computed(
+        "tutorial.pyramid.ke_exact_3s": Computed(
             simulate.format("pyramid20"),
             lambda r: kinetic_energy(r.simulate("pyramid20", {"duration": 3.0}), 3.0, 1.0, 1 / 6)),
+        "tutorial.pyramid.ke_0.5s": Computed(
+            simulate.format("pyramid20") + " with direct_solve_resting_points 0",
+            lambda r: kinetic_energy(r.simulate("pyramid20", UNSEEDED), 0.5, 1.0, 1 / 6)),
+        "tutorial.pyramid.ke_3s": Computed(
+            simulate.format("pyramid20") + " with direct_solve_resting_points 0",
+            lambda r: kinetic_energy(r.simulate("pyramid20", UNSEEDED), 3.0, 1.0, 1 / 6)),
         "tutorial.heavy.sideways_10s": Computed(
             simulate.format("heavy_stack"),
             lambda r: max(abs(row[1]) for row in r.simulate("heavy_stack")["box9"])),

@@ -113,7 +113,7 @@ TEST_CASE("Unknown fields are rejected at every level", "[FR:Verify-Physical_Con
   check_error(R"({"gravty": [0, -9.81], "dt": 0.01, "duration": 1, "bodies": []})", "gravty",
               "is not a known field (known: description, gravity, G, integrator, dt, duration, "
               "output_dt, velocity_iterations, velocity_tolerance, direct_solve_points, "
-              "direct_solve_uneven_points, direct_solve_mass_ratio, "
+              "direct_solve_uneven_points, direct_solve_mass_ratio, direct_solve_resting_points, "
               "position_iterations, restitution_threshold, sleep, sleep_speed, "
               "sleep_angular_speed, time_to_sleep, coloured_island_contacts, island_part_contacts, "
               "bodies)",
@@ -235,7 +235,8 @@ TEST_CASE("Settings are checked", "[FR:Verify-Physical_Constraints]") {
   const std::string direct_solve[][3] = {
       {"direct_solve_points", "must be in [0, 1024]", "2000"},
       {"direct_solve_uneven_points", "must be in [0, 1024]", "-1"},
-      {"direct_solve_mass_ratio", "must be >= 1 (heaviest over lightest)", "0.5"}};
+      {"direct_solve_mass_ratio", "must be >= 1 (heaviest over lightest)", "0.5"},
+      {"direct_solve_resting_points", "must be in [0, 65536]", "70000"}};
   for (const auto& [setting, rule, value] : direct_solve) {
     check_error("{\"" + setting + "\": " + value + R"(, "dt": 0.01, "duration": 1, "bodies": []})",
                 setting, rule, value);

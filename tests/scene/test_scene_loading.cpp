@@ -13,7 +13,8 @@ TEST_CASE("Settings and time stepping are read from the file", "[FR:Input-Initia
   const gp::Scene scene = load(R"({"gravity": [0.5, -9.81], "G": 6.674e-11,
       "integrator": "rk4", "dt": 0.002, "duration": 3, "output_dt": 0.1,
       "velocity_iterations": 7, "velocity_tolerance": 1e-3, "direct_solve_points": 12,
-      "direct_solve_uneven_points": 300, "direct_solve_mass_ratio": 4.5, "position_iterations": 2,
+      "direct_solve_uneven_points": 300, "direct_solve_mass_ratio": 4.5,
+      "direct_solve_resting_points": 900, "position_iterations": 2,
       "restitution_threshold": 0.5,
       "description": "all the settings", "bodies": []})");
   CHECK(scene.settings.gravity == gp::Vec2(0.5, -9.81));
@@ -24,6 +25,7 @@ TEST_CASE("Settings and time stepping are read from the file", "[FR:Input-Initia
   CHECK(scene.settings.direct_solve_points == 12);
   CHECK(scene.settings.direct_solve_uneven_points == 300);
   CHECK(scene.settings.direct_solve_mass_ratio == 4.5);
+  CHECK(scene.settings.direct_solve_resting_points == 900);
   CHECK(scene.settings.position_iterations == 2);
   CHECK(scene.settings.restitution_threshold == 0.5);
   CHECK(scene.dt == 0.002);
@@ -44,6 +46,7 @@ TEST_CASE("Settings left out take the engine's defaults, and output_dt defaults 
   CHECK(scene.settings.direct_solve_points == defaults.direct_solve_points);
   CHECK(scene.settings.direct_solve_uneven_points == defaults.direct_solve_uneven_points);
   CHECK(scene.settings.direct_solve_mass_ratio == defaults.direct_solve_mass_ratio);
+  CHECK(scene.settings.direct_solve_resting_points == defaults.direct_solve_resting_points);
   CHECK(scene.settings.position_iterations == defaults.position_iterations);
   CHECK(scene.settings.restitution_threshold == defaults.restitution_threshold);
   CHECK(scene.output_dt == scene.dt);

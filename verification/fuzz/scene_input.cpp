@@ -32,6 +32,8 @@ Scene bounded(Scene scene, const SceneInputLimits& limits) {
   settings.direct_solve_points = std::min(settings.direct_solve_points, limits.max_direct_points);
   settings.direct_solve_uneven_points =
       std::min(settings.direct_solve_uneven_points, limits.max_direct_points);
+  settings.direct_solve_resting_points =
+      std::min(settings.direct_solve_resting_points, limits.max_direct_points);
   return scene;
 }
 

@@ -64,19 +64,34 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
   scratch.k_sparse.setFromTriplets(scratch.entries.begin(), scratch.entries.end());
 }
 
-// The normal impulses of the island of scratch.rows into scratch.impulse (solve_normal_lcp, in at
-// most `max_rounds` rounds). Returns false where that finds none.
-bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, const MotionState& s,
-                  int max_rounds, IslandScratch& scratch) {
+// Each point's w₀, its normal velocity less its target, and λ₀, its normal impulse, of the island
+// of scratch.rows into scratch.residual and scratch.initial; returns the fastest closing w₀
+// [m/s] (0 if none closes).
+double load_island(const ContactSet& contacts, const MotionState& s, IslandScratch& scratch) {
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
-  auto w0 = scratch.residual.head(n);
-  auto start = scratch.initial.head(n);
+  if (scratch.residual.size() < n) {
+    scratch.residual.resize(n);
+    scratch.initial.resize(n);
+    scratch.impulse.resize(n);
+  }
+  double closing = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Contact& c = contacts[scratch.rows[i].contact];
     const ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
-    w0(i) = contact_normal_velocity(s, c, p) - p.target_normal_velocity;
-    start(i) = p.normal_impulse;
+    scratch.residual(i) = contact_normal_velocity(s, c, p) - p.target_normal_velocity;
+    scratch.initial(i) = p.normal_impulse;
+    closing = std::max(closing, -scratch.residual(i));
   }
+  return closing;
+}
+
+// The normal impulses of the loaded island into scratch.impulse (solve_normal_lcp, in at most
+// `max_rounds` rounds). Returns false where that finds none.
+bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int max_rounds,
+                  IslandScratch& scratch) {
+  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
+  const auto w0 = scratch.residual.head(n);
+  const auto start = scratch.initial.head(n);
   const auto impulse = scratch.impulse.head(n);
   if (n <= kDenseIslandPoints) {
     assemble_dense(contacts, inertia, scratch);
@@ -106,43 +121,80 @@ bool uneven(const ContactSet& contacts, const ContactIslands& islands, std::uint
   return lightest > mass_ratio * heaviest;
 }
 
+// Whether every movable body of the island of `root` moved slower than `limits.resting_speed`
+// and turned slower than `limits.resting_angular_speed` at the start of the step.
+bool at_rest(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
+             const IslandBodies& bodies, const DirectSolveLimits& limits) {
+  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
+    const Contact& c = contacts[islands.order[e]];
+    for (const BodyId b : {c.body_a, c.body_b}) {
+      if (!movable(bodies.inertia, b)) continue;
+      if (bodies.start.velocity[b].norm() >= limits.resting_speed ||
+          std::abs(bodies.start.angular_velocity[b]) >= limits.resting_angular_speed) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Why an island is solved this step.
+enum class Reason { kNone, kSmall, kUneven, kResting };
+
+Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
+                       const IslandBodies& bodies, const DirectSolveLimits& limits) {
+  const std::size_t points = islands.points[root];
+  if (points == 0) return Reason::kNone;
+  if (points <= limits.points) return Reason::kSmall;
+  if (points <= limits.uneven_points &&
+      uneven(contacts, islands, islands.island_start[root], islands.island_end[root],
+             bodies.inertia, limits.mass_ratio)) {
+    return Reason::kUneven;
+  }
+  if (points <= limits.resting_points && at_rest(contacts, islands, root, bodies, limits)) {
+    return Reason::kResting;
+  }
+  return Reason::kNone;
+}
+
 }  // namespace
 
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
-                        const BodyInertia& inertia, const DirectSolveLimits& limits, MotionState& s,
+                        const IslandBodies& bodies, const DirectSolveLimits& limits, MotionState& s,
                         IslandScratch& scratch) {
-  const std::size_t most = std::max(limits.points, limits.uneven_points);
+  const BodyInertia& inertia = bodies.inertia;
   if (contacts.empty() || limits.points == 0) return 0;
-  const auto size = static_cast<Eigen::Index>(most);
-  if (scratch.residual.size() < size) {
-    const Eigen::Index dense = std::min<Eigen::Index>(size, kDenseIslandPoints);
-    scratch.k_dense.resize(dense, dense);
-    scratch.residual.resize(size);
-    scratch.initial.resize(size);
-    scratch.impulse.resize(size);
-    scratch.rows.reserve(most);
-    scratch.lcp.reserve(size);
+  if (scratch.k_dense.rows() == 0) {
+    // One stride for every dense island (NormalLcpScratch::reserve_dense).
+    scratch.k_dense.resize(kDenseIslandPoints, kDenseIslandPoints);
+    scratch.lcp.reserve_dense(kDenseIslandPoints);
   }
   int solved = 0;
-  const std::size_t bodies = inertia.inverse_mass.size();
-  for (std::size_t r = 0; r < bodies; ++r) {
-    const std::size_t points = islands.points[r];
-    if (points == 0 || points > most) continue;
-    // An island let in by its uneven masses, which sequential impulses cannot hold up, is worth
-    // more rounds than one they can.
-    const bool let_in_uneven = points > limits.points;
-    if (let_in_uneven && !uneven(contacts, islands, islands.island_start[r], islands.island_end[r],
-                                 inertia, limits.mass_ratio)) {
-      continue;
-    }
+  const bool resting_paused = scratch.resting_pause > 0;
+  if (resting_paused) --scratch.resting_pause;
+  const std::size_t body_count = inertia.inverse_mass.size();
+  for (std::size_t r = 0; r < body_count; ++r) {
+    const Reason reason = reason_to_solve(contacts, islands, r, bodies, limits);
+    if (reason == Reason::kNone || (reason == Reason::kResting && resting_paused)) continue;
     scratch.rows.clear();
     for (std::uint32_t e = islands.island_start[r]; e < islands.island_end[r]; ++e) {
       for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
         scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
       }
     }
-    if (!solve_island(contacts, inertia, s,
-                      let_in_uneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds, scratch)) {
+    // A resting island whose warm start holds it is left to the passes, which then settle it in
+    // a pass or two; a solve costs as much as hundreds of them.
+    if (load_island(contacts, s, scratch) <= limits.unheld_speed && reason == Reason::kResting) {
+      continue;
+    }
+    // An island let in by its uneven masses, which sequential impulses cannot hold up, is worth
+    // more rounds than one they can.
+    if (!solve_island(contacts, inertia,
+                      reason == Reason::kUneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds,
+                      scratch)) {
+      // A resting island that does not settle would be tried again at every step, at up to
+      // 16 rounds of a large factorisation each.
+      if (reason == Reason::kResting) scratch.resting_pause = kRestingPauseSteps;
       continue;
     }
     ++solved;

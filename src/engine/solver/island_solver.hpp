@@ -48,16 +48,38 @@ struct IslandScratch {
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
   Eigen::VectorXd impulse;   // N·s: λ, the solution
   NormalLcpScratch lcp;
+  // Calls of solve_small_islands left in which no resting island is solved, after a resting
+  // island's solve did not settle.
+  int resting_pause = 0;
 };
 
-/// Which islands solve_small_islands solves: those of at most `points` contact points, and those
-/// of at most `uneven_points` whose heaviest dynamic body is more than `mass_ratio` times as heavy
-/// as their lightest (Settings::direct_solve_points, direct_solve_uneven_points and
-/// direct_solve_mass_ratio); none when `points` is 0.
+/// Calls of solve_small_islands (steps or sub-steps) that a resting island's solve that does not
+/// settle pauses the solve of resting islands for: such a solve costs up to 16 factorisations of
+/// its island (2 s for a 100-row pyramid), and paused it takes at most one call in 64.
+inline constexpr int kRestingPauseSteps = 64;
+
+/// Which islands solve_small_islands solves: those of at most `points` contact points; those of
+/// at most `uneven_points` whose heaviest dynamic body is more than `mass_ratio` times as heavy
+/// as their lightest; and those of at most `resting_points` at rest (every body slower than
+/// `resting_speed` and `resting_angular_speed` at the start of the step) whose warm start does
+/// not hold them (a point closing faster than `unheld_speed` after it). None when `points` is 0.
+/// (Settings::direct_solve_points, direct_solve_uneven_points, direct_solve_mass_ratio,
+/// direct_solve_resting_points.)
 struct DirectSolveLimits {
   std::size_t points;
   std::size_t uneven_points;
   double mass_ratio;
+  std::size_t resting_points;
+  double resting_speed;          ///< m/s
+  double resting_angular_speed;  ///< rad/s
+  double unheld_speed;           ///< m/s
+};
+
+/// The bodies as solve_small_islands reads them: their inertias, and their motion at the start of
+/// the step.
+struct IslandBodies {
+  const BodyInertia& inertia;
+  const MotionState& start;
 };
 
 /// For each of the `islands` of `contacts` (contacts joined through the dynamic bodies they share)
@@ -71,7 +93,7 @@ struct DirectSolveLimits {
 /// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). Returns the
 /// number of islands solved.
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
-                        const BodyInertia& inertia, const DirectSolveLimits& limits, MotionState& s,
+                        const IslandBodies& bodies, const DirectSolveLimits& limits, MotionState& s,
                         IslandScratch& scratch);
 
 }  // namespace gp
