@@ -90,9 +90,10 @@ std::string EngineRun::describe() const {
                                       : std::string("all run unless one changes nothing"))
        << ") and " << s.position_iterations << " position passes, islands up to "
        << s.direct_solve_points << " points solved directly (" << s.direct_solve_uneven_points
-       << " where masses differ more than " << s.direct_solve_mass_ratio << "-fold), linear slop "
-       << s.linear_slop << " m, restitution threshold " << s.restitution_threshold
-       << " m/s, no sleeping";
+       << " where masses differ more than " << s.direct_solve_mass_ratio << "-fold, "
+       << s.direct_solve_resting_points
+       << " at rest where the carried impulses do not hold), linear slop " << s.linear_slop
+       << " m, restitution threshold " << s.restitution_threshold << " m/s, no sleeping";
   return text.str();
 }
 

@@ -65,24 +65,35 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
 }
 
 // Each point's w₀, its normal velocity less its target, and λ₀, its normal impulse, of the island
-// of scratch.rows into scratch.residual and scratch.initial; returns the fastest closing w₀
-// [m/s] (0 if none closes).
-double load_island(const ContactSet& contacts, const MotionState& s, IslandScratch& scratch) {
+// of scratch.rows into scratch.residual and scratch.initial.
+void load_island(const ContactSet& contacts, const MotionState& s, IslandScratch& scratch) {
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
   if (scratch.residual.size() < n) {
     scratch.residual.resize(n);
     scratch.initial.resize(n);
     scratch.impulse.resize(n);
   }
-  double closing = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Contact& c = contacts[scratch.rows[i].contact];
     const ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
     scratch.residual(i) = contact_normal_velocity(s, c, p) - p.target_normal_velocity;
     scratch.initial(i) = p.normal_impulse;
-    closing = std::max(closing, -scratch.residual(i));
   }
-  return closing;
+}
+
+// Whether the carried-over impulses hold the island of `root` in `s`: no point closes faster
+// than `unheld_speed` [m/s] (its normal velocity less its target).
+bool held(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
+          const MotionState& s, double unheld_speed) {
+  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
+    const Contact& c = contacts[islands.order[e]];
+    for (const ContactPointState& p : contacts.points(c)) {
+      if (contact_normal_velocity(s, c, p) - p.target_normal_velocity < -unheld_speed) {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 // The normal impulses of the loaded island into scratch.impulse (solve_normal_lcp, in at most
@@ -138,6 +149,20 @@ bool at_rest(const ContactSet& contacts, const ContactIslands& islands, std::siz
   return true;
 }
 
+// Frees the room a resting island's solve grew `scratch` to, keeping the dense islands' (and so
+// their stride).
+void release_large(IslandScratch& scratch) {
+  // Moved-from temporaries take the room with them; `= {}` would keep a vector's capacity.
+  scratch.rows = std::vector<IslandScratch::Row>();
+  scratch.ends = std::vector<IslandScratch::End>();
+  scratch.entries = std::vector<Eigen::Triplet<double>>();
+  scratch.k_sparse = SparseK();
+  scratch.residual = Eigen::VectorXd();
+  scratch.initial = Eigen::VectorXd();
+  scratch.impulse = Eigen::VectorXd();
+  scratch.lcp.release();
+}
+
 // Why an island is solved this step.
 enum class Reason { kNone, kSmall, kUneven, kResting };
 
@@ -176,38 +201,41 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   for (std::size_t r = 0; r < body_count; ++r) {
     const Reason reason = reason_to_solve(contacts, islands, r, bodies, limits);
     if (reason == Reason::kNone || (reason == Reason::kResting && resting_paused)) continue;
+    // A resting island whose warm start holds it is left to the passes, which then settle it in
+    // a pass or two; a solve costs as much as hundreds of them.
+    if (reason == Reason::kResting && held(contacts, islands, r, s, limits.unheld_speed)) continue;
     scratch.rows.clear();
     for (std::uint32_t e = islands.island_start[r]; e < islands.island_end[r]; ++e) {
       for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
         scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
       }
     }
-    // A resting island whose warm start holds it is left to the passes, which then settle it in
-    // a pass or two; a solve costs as much as hundreds of them.
-    if (load_island(contacts, s, scratch) <= limits.unheld_speed && reason == Reason::kResting) {
-      continue;
-    }
+    load_island(contacts, s, scratch);
     // An island let in by its uneven masses, which sequential impulses cannot hold up, is worth
     // more rounds than one they can.
-    if (!solve_island(contacts, inertia,
-                      reason == Reason::kUneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds,
-                      scratch)) {
-      // A resting island that does not settle would be tried again at every step, at up to
-      // 16 rounds of a large factorisation each.
-      if (reason == Reason::kResting) scratch.resting_pause = kRestingPauseSteps;
-      continue;
+    const bool settled = solve_island(
+        contacts, inertia, reason == Reason::kUneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds,
+        scratch);
+    if (settled) {
+      ++solved;
+      for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
+        const Contact& c = contacts[scratch.rows[i].contact];
+        ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
+        const double normal = scratch.impulse(static_cast<Eigen::Index>(i));
+        const double limit = c.friction * normal;
+        const double tangent = std::clamp(p.tangent_impulse, -limit, limit);
+        apply_contact_impulse(c, p, normal - p.normal_impulse, tangent - p.tangent_impulse, inertia,
+                              s);
+        p.normal_impulse = normal;
+        p.tangent_impulse = tangent;
+      }
     }
-    ++solved;
-    for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
-      const Contact& c = contacts[scratch.rows[i].contact];
-      ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
-      const double normal = scratch.impulse(static_cast<Eigen::Index>(i));
-      const double limit = c.friction * normal;
-      const double tangent = std::clamp(p.tangent_impulse, -limit, limit);
-      apply_contact_impulse(c, p, normal - p.normal_impulse, tangent - p.tangent_impulse, inertia,
-                            s);
-      p.normal_impulse = normal;
-      p.tangent_impulse = tangent;
+    if (reason == Reason::kResting) {
+      // A resting island's solve comes once, not at every step: the room it grew to is freed.
+      // One that does not settle would be tried again at every step, at up to 16 rounds of a
+      // large factorisation each.
+      if (!settled) scratch.resting_pause = kRestingPauseSteps;
+      release_large(scratch);
     }
   }
   return solved;

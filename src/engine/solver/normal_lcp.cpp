@@ -47,10 +47,12 @@ void order_points(const Eigen::Ref<const Eigen::MatrixXd>& k, NormalLcpScratch& 
 // the ordering would otherwise be a third of a round's cost at 292 points. K's rows and columns in
 // that order go to scratch.k_ordered.
 void order_points(const SparseK& k, NormalLcpScratch& scratch) {
-  scratch.ordering(k, scratch.to_point);
-  scratch.to_position = scratch.to_point.inverse();
-  scratch.k_ordered = k.twistedBy(scratch.to_position);
-  const int* const to_point = scratch.to_point.indices().data();
+  if (!scratch.sparse) scratch.sparse = std::make_unique<SparseLcpScratch>();
+  SparseLcpScratch& sparse = *scratch.sparse;
+  sparse.ordering(k, sparse.to_point);
+  sparse.to_position = sparse.to_point.inverse();
+  sparse.k_ordered = k.twistedBy(sparse.to_position);
+  const int* const to_point = sparse.to_point.indices().data();
   scratch.point_at.assign(to_point, to_point + k.rows());
 }
 
@@ -110,23 +112,24 @@ bool solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
   const auto a = static_cast<Eigen::Index>(scratch.pushing_rows.size());
   if (a == 0) return true;
   auto rhs = scratch.rhs.head(a);
-  SparseK& k_pushing = scratch.k_pushing;
+  SparseLcpScratch& sparse = *scratch.sparse;
+  SparseK& k_pushing = sparse.k_pushing;
   k_pushing.resize(a, a);
   k_pushing.reserve(k.nonZeros());
   for (Eigen::Index q = 0; q < a; ++q) {
     const int column = scratch.pushing_rows[q];
     rhs(q) = -scratch.speed(scratch.point_at[column]);
     k_pushing.startVec(q);
-    for (SparseK::InnerIterator entry(scratch.k_ordered, column); entry; ++entry) {
+    for (SparseK::InnerIterator entry(sparse.k_ordered, column); entry; ++entry) {
       const int r = scratch.pushing_row[scratch.point_at[entry.row()]];
       if (r < 0) continue;
       k_pushing.insertBack(r, q) = r == q ? entry.value() * (1.0 + kCompliance) : entry.value();
     }
   }
   k_pushing.finalize();
-  scratch.factor.compute(k_pushing);
-  if (scratch.factor.info() != Eigen::Success) return false;
-  rhs = scratch.factor.solve(rhs);
+  sparse.factor.compute(k_pushing);
+  if (sparse.factor.info() != Eigen::Success) return false;
+  rhs = sparse.factor.solve(rhs);
   for (Eigen::Index q = 0; q < a; ++q)
     scratch.change(scratch.point_at[scratch.pushing_rows[q]]) = rhs(q);
   speeds_after_change(k, w0, scratch);
@@ -206,6 +209,12 @@ void NormalLcpScratch::reserve(Eigen::Index points) {
   pushing_row.resize(static_cast<std::size_t>(points));
   point_at.reserve(static_cast<std::size_t>(points));
   pushing_rows.reserve(static_cast<std::size_t>(points));
+}
+
+void NormalLcpScratch::release() {
+  NormalLcpScratch empty;
+  empty.k_pushing_dense.swap(k_pushing_dense);
+  *this = std::move(empty);
 }
 
 void NormalLcpScratch::reserve_dense(Eigen::Index points) {

@@ -3,6 +3,7 @@
 // principal pivoting. Kept apart from the island's assembly (island_solver.hpp) so that it can
 // be checked on problems whose solution is known.
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -17,6 +18,17 @@ namespace gp {
 /// row.
 using SparseK = Eigen::SparseMatrix<double>;
 
+/// What solve_normal_lcp keeps for a sparse K: the order of its points (AMD), whose room a pile's
+/// points, numbered as its contacts come, would fill the factor in, and each round's factor.
+struct SparseLcpScratch {
+  Eigen::AMDOrdering<int> ordering;
+  /// to_point maps a position in the order to a point, to_position back.
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> to_point, to_position;
+  SparseK k_ordered;  ///< K, rows and columns in that order
+  SparseK k_pushing;  ///< K with its compliance, restricted to the pushing points
+  Eigen::SimplicialLLT<SparseK, Eigen::Lower, Eigen::NaturalOrdering<int>> factor;
+};
+
 /// Scratch for solve_normal_lcp, kept by the caller so that a step reuses the room of the last.
 struct NormalLcpScratch {
   Eigen::VectorXd diagonal;       // per point: K_ii
@@ -27,16 +39,11 @@ struct NormalLcpScratch {
   std::vector<char> wrong;        // per point: on the wrong side of its complementarity condition
   std::vector<int> pushing_row;   // per point: its row among the pushing points, or −1
   std::vector<int> pushing_rows;  // the pushing points' positions in the order, ascending
-  // A fill-reducing order of the points (AMD): a pile's points, numbered as its contacts come,
-  // would fill the factor in. to_point maps a position in it to a point, to_position back.
-  Eigen::AMDOrdering<int> ordering;
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> to_point, to_position;
-  std::vector<int> point_at;  // per position in the order: its point
-  SparseK k_ordered;          // K, rows and columns in that order
-  // K with its compliance, restricted to the pushing points: of a dense K, then of a sparse one.
+  std::vector<int> point_at;      // per position in the order a round takes the points: its point
+  // K with its compliance, restricted to the pushing points, of a dense K.
   Eigen::MatrixXd k_pushing_dense;
-  SparseK k_pushing;
-  Eigen::SimplicialLLT<SparseK, Eigen::Lower, Eigen::NaturalOrdering<int>> factor;
+  /// Of a sparse K, made at its first solve; release_sparse() frees it.
+  std::unique_ptr<SparseLcpScratch> sparse;
 
   /// Room for problems of up to `points` points.
   void reserve(Eigen::Index points);
@@ -44,6 +51,9 @@ struct NormalLcpScratch {
   /// rounding depends on the room's stride (Eigen vectorises by alignment), so that the engine
   /// keeps one stride for every island.
   void reserve_dense(Eigen::Index points);
+  /// Frees the room for large problems, tens of megabytes after a pile of 30,000 points, keeping
+  /// that of the dense pushing sets (and so its stride).
+  void release();
 };
 
 /// How solve_normal_lcp ended.
