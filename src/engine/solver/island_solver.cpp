@@ -156,7 +156,7 @@ void release_large(IslandScratch& scratch) {
   scratch.rows = std::vector<IslandScratch::Row>();
   scratch.ends = std::vector<IslandScratch::End>();
   scratch.entries = std::vector<Eigen::Triplet<double>>();
-  scratch.k_sparse = SparseK();
+  SparseK().swap(scratch.k_sparse);  // assigning an empty matrix would keep its entries' room
   scratch.residual = Eigen::VectorXd();
   scratch.initial = Eigen::VectorXd();
   scratch.impulse = Eigen::VectorXd();
