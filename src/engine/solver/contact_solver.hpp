@@ -37,7 +37,7 @@ class ContactSolver {
 
  private:
   ContactBatches batches_;  ///< of the sub-step's contacts, found in prepare
-  IslandScratch islands_;
+  DirectSolveScratch islands_;
   SpeculativeScratch speculative_;
   PositionCorrection positions_;
 };

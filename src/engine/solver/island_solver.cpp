@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <limits>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include "engine/threads.hpp"
+
 namespace gp {
 
 namespace {
@@ -81,21 +86,6 @@ void load_island(const ContactSet& contacts, const MotionState& s, IslandScratch
   }
 }
 
-// Whether the carried-over impulses hold the island of `root` in `s`: no point closes faster
-// than `unheld_speed` [m/s] (its normal velocity less its target).
-bool held(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-          const MotionState& s, double unheld_speed) {
-  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
-    const Contact& c = contacts[islands.order[e]];
-    for (const ContactPointState& p : contacts.points(c)) {
-      if (contact_normal_velocity(s, c, p) - p.target_normal_velocity < -unheld_speed) {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
 // The normal impulses of the loaded island into scratch.impulse (solve_normal_lcp, in at most
 // `max_rounds` rounds). Returns false where that finds none.
 bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int max_rounds,
@@ -114,39 +104,38 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int ma
   return solve_normal_lcp(scratch.k_sparse, w0, start, scratch.lcp, impulse, max_rounds).solved;
 }
 
-// Whether the island of `contacts` at `islands.order[first, last)` has a dynamic body more than
-// `mass_ratio` times as heavy as another.
-bool uneven(const ContactSet& contacts, const ContactIslands& islands, std::uint32_t first,
-            std::uint32_t last, const BodyInertia& inertia, double mass_ratio) {
+// What one walk over an island's contacts finds, for reason_to_solve.
+struct IslandSurvey {
+  bool uneven;   // a dynamic body more than DirectSolveLimits::mass_ratio times as heavy as another
+  bool at_rest;  // every movable body slower than the resting speeds at the start of the step
+  bool held;     // no point closing faster than DirectSolveLimits::unheld_speed now
+};
+
+IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
+                    const IslandBodies& bodies, const MotionState& s,
+                    const DirectSolveLimits& limits) {
   double lightest = 0.0;  // as inverse masses [1/kg]
   double heaviest = std::numeric_limits<double>::infinity();
-  for (std::uint32_t e = first; e < last; ++e) {
-    const Contact& c = contacts[islands.order[e]];
-    for (const BodyId b : {c.body_a, c.body_b}) {
-      const double inverse_mass = inertia.inverse_mass[b];
-      if (inverse_mass == 0.0) continue;
-      lightest = std::max(lightest, inverse_mass);
-      heaviest = std::min(heaviest, inverse_mass);
-    }
-  }
-  return lightest > mass_ratio * heaviest;
-}
-
-// Whether every movable body of the island of `root` moved slower than `limits.resting_speed`
-// and turned slower than `limits.resting_angular_speed` at the start of the step.
-bool at_rest(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-             const IslandBodies& bodies, const DirectSolveLimits& limits) {
+  bool at_rest = true;
+  bool held = true;
   for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
     const Contact& c = contacts[islands.order[e]];
     for (const BodyId b : {c.body_a, c.body_b}) {
       if (!movable(bodies.inertia, b)) continue;
-      if (bodies.start.velocity[b].norm() >= limits.resting_speed ||
-          std::abs(bodies.start.angular_velocity[b]) >= limits.resting_angular_speed) {
-        return false;
+      const double inverse_mass = bodies.inertia.inverse_mass[b];
+      if (inverse_mass > 0.0) {
+        lightest = std::max(lightest, inverse_mass);
+        heaviest = std::min(heaviest, inverse_mass);
       }
+      at_rest = at_rest && bodies.start.velocity[b].norm() < limits.resting_speed &&
+                std::abs(bodies.start.angular_velocity[b]) < limits.resting_angular_speed;
+    }
+    for (const ContactPointState& p : contacts.points(c)) {
+      held = held &&
+             contact_normal_velocity(s, c, p) - p.target_normal_velocity >= -limits.unheld_speed;
     }
   }
-  return true;
+  return {lightest > limits.mass_ratio * heaviest, at_rest, held};
 }
 
 // Frees the room a resting island's solve grew `scratch` to, keeping the dense islands' (and so
@@ -166,79 +155,116 @@ void release_large(IslandScratch& scratch) {
 // Why an island is solved this step.
 enum class Reason { kNone, kSmall, kUneven, kResting };
 
+// A resting island whose warm start holds it is left to the passes, which then settle it in a
+// pass or two; a solve costs as much as hundreds of them.
 Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-                       const IslandBodies& bodies, const DirectSolveLimits& limits) {
+                       const IslandBodies& bodies, const MotionState& s,
+                       const DirectSolveLimits& limits) {
   const std::size_t points = islands.points[root];
   if (points == 0) return Reason::kNone;
   if (points <= limits.points) return Reason::kSmall;
-  if (points <= limits.uneven_points &&
-      uneven(contacts, islands, islands.island_start[root], islands.island_end[root],
-             bodies.inertia, limits.mass_ratio)) {
-    return Reason::kUneven;
-  }
-  if (points <= limits.resting_points && at_rest(contacts, islands, root, bodies, limits)) {
-    return Reason::kResting;
-  }
+  const bool may_be_uneven = points <= limits.uneven_points;
+  const bool may_rest = points <= limits.resting_points;
+  if (!may_be_uneven && !may_rest) return Reason::kNone;
+  const IslandSurvey found = survey(contacts, islands, root, bodies, s, limits);
+  if (may_be_uneven && found.uneven) return Reason::kUneven;
+  if (may_rest && found.at_rest && !found.held) return Reason::kResting;
   return Reason::kNone;
 }
+
+// The points of the island of `root` into scratch.rows.
+void list_points(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
+                 IslandScratch& scratch) {
+  scratch.rows.clear();
+  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
+    for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
+      scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
+    }
+  }
+}
+
+// Solves the island of scratch.rows in at most `max_rounds` rounds and applies its impulses to
+// `s`; returns whether it settled.
+bool solve_listed_island(ContactSet& contacts, const BodyInertia& inertia, int max_rounds,
+                         MotionState& s, IslandScratch& scratch) {
+  if (scratch.k_dense.rows() == 0) {
+    // One stride for every dense island, on every thread (NormalLcpScratch::reserve_dense).
+    scratch.k_dense.resize(kDenseIslandPoints, kDenseIslandPoints);
+    scratch.lcp.reserve_dense(kDenseIslandPoints);
+  }
+  load_island(contacts, s, scratch);
+  if (!solve_island(contacts, inertia, max_rounds, scratch)) return false;
+  for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
+    const Contact& c = contacts[scratch.rows[i].contact];
+    ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
+    const double normal = scratch.impulse(static_cast<Eigen::Index>(i));
+    const double limit = c.friction * normal;
+    const double tangent = std::clamp(p.tangent_impulse, -limit, limit);
+    apply_contact_impulse(c, p, normal - p.normal_impulse, tangent - p.tangent_impulse, inertia, s);
+    p.normal_impulse = normal;
+    p.tangent_impulse = tangent;
+  }
+  return true;
+}
+
+// What the islands of a range of roots came to.
+struct Tally {
+  int solved = 0;
+  bool resting_failed = false;  // a resting island's solve did not settle
+};
+
+// A space of at least this many bodies has its islands solved side by side, a task per this many
+// roots: a task costs about a microsecond to hand out, as much as a small island's solve.
+constexpr std::size_t kParallelBodies = 4096;
+constexpr std::size_t kRootsPerTask = 64;
 
 }  // namespace
 
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
                         const IslandBodies& bodies, const DirectSolveLimits& limits, MotionState& s,
-                        IslandScratch& scratch) {
-  const BodyInertia& inertia = bodies.inertia;
+                        DirectSolveScratch& scratch) {
   if (contacts.empty() || limits.points == 0) return 0;
-  if (scratch.k_dense.rows() == 0) {
-    // One stride for every dense island (NormalLcpScratch::reserve_dense).
-    scratch.k_dense.resize(kDenseIslandPoints, kDenseIslandPoints);
-    scratch.lcp.reserve_dense(kDenseIslandPoints);
+  DirectSolveLimits active = limits;
+  if (scratch.resting_pause > 0) {
+    --scratch.resting_pause;
+    active.resting_points = 0;
   }
-  int solved = 0;
-  const bool resting_paused = scratch.resting_pause > 0;
-  if (resting_paused) --scratch.resting_pause;
-  const std::size_t body_count = inertia.inverse_mass.size();
-  for (std::size_t r = 0; r < body_count; ++r) {
-    const Reason reason = reason_to_solve(contacts, islands, r, bodies, limits);
-    if (reason == Reason::kNone || (reason == Reason::kResting && resting_paused)) continue;
-    // A resting island whose warm start holds it is left to the passes, which then settle it in
-    // a pass or two; a solve costs as much as hundreds of them.
-    if (reason == Reason::kResting && held(contacts, islands, r, s, limits.unheld_speed)) continue;
-    scratch.rows.clear();
-    for (std::uint32_t e = islands.island_start[r]; e < islands.island_end[r]; ++e) {
-      for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
-        scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
+  const auto solve_roots = [&](std::size_t first, std::size_t last, Tally tally) {
+    IslandScratch& room = scratch.per_thread.local();
+    for (std::size_t r = first; r < last; ++r) {
+      const Reason reason = reason_to_solve(contacts, islands, r, bodies, s, active);
+      if (reason == Reason::kNone) continue;
+      list_points(contacts, islands, r, room);
+      // An island let in by its uneven masses, which sequential impulses cannot hold up, is
+      // worth more rounds than one they can.
+      const bool settled = solve_listed_island(
+          contacts, bodies.inertia,
+          reason == Reason::kUneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds, s, room);
+      tally.solved += settled;
+      if (reason == Reason::kResting) {
+        // A resting island's solve comes once, not at every step: the room it grew to is freed.
+        release_large(room);
+        tally.resting_failed |= !settled;
       }
     }
-    load_island(contacts, s, scratch);
-    // An island let in by its uneven masses, which sequential impulses cannot hold up, is worth
-    // more rounds than one they can.
-    const bool settled = solve_island(
-        contacts, inertia, reason == Reason::kUneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds,
-        scratch);
-    if (settled) {
-      ++solved;
-      for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
-        const Contact& c = contacts[scratch.rows[i].contact];
-        ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
-        const double normal = scratch.impulse(static_cast<Eigen::Index>(i));
-        const double limit = c.friction * normal;
-        const double tangent = std::clamp(p.tangent_impulse, -limit, limit);
-        apply_contact_impulse(c, p, normal - p.normal_impulse, tangent - p.tangent_impulse, inertia,
-                              s);
-        p.normal_impulse = normal;
-        p.tangent_impulse = tangent;
-      }
-    }
-    if (reason == Reason::kResting) {
-      // A resting island's solve comes once, not at every step: the room it grew to is freed.
-      // One that does not settle would be tried again at every step, at up to 16 rounds of a
-      // large factorisation each.
-      if (!settled) scratch.resting_pause = kRestingPauseSteps;
-      release_large(scratch);
-    }
-  }
-  return solved;
+    return tally;
+  };
+  const std::size_t body_count = bodies.inertia.inverse_mass.size();
+  const Tally tally =
+      one_thread() || body_count < kParallelBodies
+          ? solve_roots(0, body_count, Tally{})
+          : tbb::parallel_reduce(
+                tbb::blocked_range<std::size_t>(0, body_count, kRootsPerTask), Tally{},
+                [&](const tbb::blocked_range<std::size_t>& r, Tally t) {
+                  return solve_roots(r.begin(), r.end(), t);
+                },
+                [](Tally a, Tally b) {
+                  return Tally{a.solved + b.solved, a.resting_failed || b.resting_failed};
+                });
+  // One that does not settle would be tried again at every step, at up to 16 rounds of a large
+  // factorisation each.
+  if (tally.resting_failed) scratch.resting_pause = kRestingPauseSteps;
+  return tally.solved;
 }
 
 }  // namespace gp

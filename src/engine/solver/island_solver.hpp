@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -22,8 +23,7 @@ namespace gp {
 /// round costs the cube of the points, 8 Mflop at 292.
 inline constexpr Eigen::Index kDenseIslandPoints = 64;
 
-/// Scratch for solve_small_islands, kept by the caller so that a step reuses the room of the
-/// last.
+/// The room of one island's solve, one per thread.
 struct IslandScratch {
   struct Row {
     std::uint32_t contact;
@@ -48,6 +48,12 @@ struct IslandScratch {
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
   Eigen::VectorXd impulse;   // N·s: λ, the solution
   NormalLcpScratch lcp;
+};
+
+/// Scratch for solve_small_islands, kept by the caller so that a step reuses the room of the
+/// last.
+struct DirectSolveScratch {
+  tbb::enumerable_thread_specific<IslandScratch> per_thread;
   // Calls of solve_small_islands left in which no resting island is solved, after a resting
   // island's solve did not settle.
   int resting_pause = 0;
@@ -90,10 +96,11 @@ struct IslandBodies {
 /// friction impulses held; then clamps the friction impulses to the new friction cones. Found by
 /// solve_normal_lcp; an island it does not solve (within its round limit, or with K on a
 /// pushing set not positive definite) keeps its impulses for the sequential passes. Applies the
-/// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). Returns the
-/// number of islands solved.
+/// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). The islands
+/// are solved side by side on the threads of the current task arena, each alone, so that the
+/// result does not depend on their number. Returns the number of islands solved.
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
                         const IslandBodies& bodies, const DirectSolveLimits& limits, MotionState& s,
-                        IslandScratch& scratch);
+                        DirectSolveScratch& scratch);
 
 }  // namespace gp
