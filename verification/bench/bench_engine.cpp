@@ -53,6 +53,9 @@ std::string_view engine_build(Engine engine) {
 
 std::string_view engine_build(std::string_view label) {
   if (label == kOursTwoThreads) return engine_build(Engine::Ours);
+  for (const OursIntegrator& variant : kOursIntegrators) {
+    if (label == variant.label) return engine_build(Engine::Ours);
+  }
   for (Engine engine : kEngines) {
     if (engine_label(engine) == label) return engine_build(engine);
   }

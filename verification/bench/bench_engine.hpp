@@ -27,6 +27,17 @@ inline constexpr std::array<Engine, 5> kEngines{Engine::Ours, Engine::ChipmunkDe
 /// its row's ours/engine is the speed-up the second thread gives.
 inline constexpr std::string_view kOursTwoThreads = "ours-2-threads";
 
+/// Ours with each integrator other than the default, run by gamephysics_bench beside the engines
+/// (on one thread): its row's ours/engine is the default's time over its own, so that an
+/// integrator that falls onto a slow path shows (below 1: slower than the default).
+struct OursIntegrator {
+  std::string_view label;
+  IntegratorKind integrator;
+};
+inline constexpr std::array<OursIntegrator, 2> kOursIntegrators{
+    OursIntegrator{"ours-symplectic-euler", IntegratorKind::SymplecticEuler},
+    OursIntegrator{"ours-rk4", IntegratorKind::RK4}};
+
 /// "ours", "chipmunk-default", "chipmunk-matched", "box2d-default", "box2d-matched".
 std::string_view engine_label(Engine engine);
 

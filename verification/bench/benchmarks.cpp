@@ -47,11 +47,13 @@ double largest(const std::vector<double>& v) {
   return *std::max_element(v.begin(), v.end());
 }
 
-void add(const Workload& w, Engine engine, std::string_view label, int threads) {
+// The benchmark keeps its own copy of the workload, so that a variant made here outlives the call.
+void add(Workload w, Engine engine, std::string_view label, int threads) {
   const std::string name = w.name + "/" + std::string(label);
-  benchmark::RegisterBenchmark(
-      name.c_str(),
-      [&w, engine, threads](benchmark::State& s) { run_workload(s, w, engine, threads); })
+  benchmark::RegisterBenchmark(name.c_str(),
+                               [w = std::move(w), engine, threads](benchmark::State& s) {
+                                 run_workload(s, w, engine, threads);
+                               })
       ->Iterations(1)
       ->UseManualTime()
       ->Unit(benchmark::kMillisecond)
@@ -65,6 +67,11 @@ void register_benchmarks(const std::vector<Workload>& list) {
   for (const Workload& w : list) {
     for (Engine engine : kEngines) add(w, engine, engine_label(engine), 1);
     add(w, Engine::Ours, kOursTwoThreads, 2);
+    for (const OursIntegrator& variant : kOursIntegrators) {
+      Workload with = w;
+      with.scene.settings.integrator = variant.integrator;
+      add(std::move(with), Engine::Ours, variant.label, 1);
+    }
   }
 }
 

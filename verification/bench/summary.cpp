@@ -46,6 +46,7 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
     std::vector<std::string> labels;
     for (Engine engine : kEngines) labels.emplace_back(engine_label(engine));
     labels.emplace_back(kOursTwoThreads);
+    for (const OursIntegrator& variant : kOursIntegrators) labels.emplace_back(variant.label);
     for (const std::string& label : labels) {
       const auto found = by_name.find(w.name + "/" + label);
       if (found == by_name.end()) continue;
@@ -64,10 +65,13 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
 
 void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   out << "\nSummary: wall time of one whole run [ms]; ours/engine = our median / the engine's "
-         "(above 1: ours is slower; on the rows ours-2-threads, the speed-up of a second thread); "
+         "(above 1: ours is slower; on the rows ours-2-threads, the speed-up of a second thread; "
+         "on "
+         "the rows ours-symplectic-euler and ours-rk4, the default integrator's time over that "
+         "integrator's); "
          "heap the engine holds at the end of a run [KiB], and per body [B]\n";
   char line[200];
-  std::snprintf(line, sizeof line, "%-20s %-16s %4s %10s %10s %10s %9s %11s %14s %10s %9s\n",
+  std::snprintf(line, sizeof line, "%-20s %-21s %4s %10s %10s %10s %9s %11s %14s %10s %9s\n",
                 "workload", "engine", "reps", "median", "min", "max", "stddev", "ours/engine",
                 "body-steps/s", "heap", "heap/body");
   out << line;
@@ -79,7 +83,7 @@ void print_summary(std::ostream& out, const std::vector<Figures>& all) {
     const std::string per_body =
         measured ? formatted("%.0f", f.heap_bytes / static_cast<double>(f.bodies)) : "-";
     std::snprintf(
-        line, sizeof line, "%-20s %-16s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s %9s\n",
+        line, sizeof line, "%-20s %-21s %4zu %10.1f %10.1f %10.1f %9.1f %11s %14.3g %10s %9s\n",
         f.workload.c_str(), f.engine.c_str(), f.repetitions, f.median_ms, f.min_ms, f.max_ms,
         f.stddev_ms, ratio.c_str(), f.body_steps_per_s, heap.c_str(), per_body.c_str());
     out << line;
