@@ -52,3 +52,27 @@ TEST_CASE("The explanation lists exactly the stages each pass of a step executes
   }
   CHECK(scenes >= 18);
 }
+
+TEST_CASE("The bounce stages are needed only while a shape has a restitution above 0",
+          "[FR:Simulation-Space]") {
+  const auto bounce_stages_needed = [](const gp::Space& space) {
+    int needed = 0;
+    for (const gp::PipelineStage& s : space.pipeline()) {
+      if (s.name == "impacts among touching bodies" || s.name == "contact solver: restitution") {
+        needed += s.needed ? 1 : 0;
+      }
+    }
+    return needed;
+  };
+  // Every shape of the pyramid has restitution 0.
+  const auto pyramid = gp::build_space(gp::load_scene(GP_SOURCE_DIR "/scenes/pyramid20.json"));
+  CHECK(bounce_stages_needed(*pyramid) == 0);
+  gp::BodyDef ball;
+  ball.name = "ball";
+  ball.position = {0.0, 30.0};
+  ball.shapes.push_back({gp::Shape::circle(0.5), 0.8, 0.6});
+  const gp::BodyId id = pyramid->add_body(ball);
+  CHECK(bounce_stages_needed(*pyramid) == 2);
+  pyramid->remove_body(id);
+  CHECK(bounce_stages_needed(*pyramid) == 0);
+}

@@ -25,6 +25,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     polygon_vertices_ += count;
   }
   append(records_, {PackedGeometry(kept), body, moves, restitution, friction});
+  if (restitution > 0.0) ++bouncing_;
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {
@@ -46,6 +47,7 @@ BodyShapes::Range BodyShapes::remove_body(BodyId body) {
   const auto blocks = std::count_if(before, after, is_polygon);
   for (auto r = before; r != after; ++r) {
     if (is_polygon(*r)) polygon_vertices_ -= r->local.polygon().vertices.size();
+    if (r->restitution > 0.0) --bouncing_;
   }
   polygons_.erase(polygons_.begin() + first_block, polygons_.begin() + first_block + blocks);
   records_.erase(before, after);

@@ -48,6 +48,8 @@ class BodyShapes {
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
+  /// Whether a shape has a coefficient of restitution above 0: without one, no contact bounces.
+  bool any_bounce() const { return bouncing_ > 0; }
 
   /// The indices [first, last) of the shapes of `body`.
   struct Range {
@@ -76,6 +78,7 @@ class BodyShapes {
   // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
   std::vector<std::unique_ptr<Vec2[]>> polygons_;
   std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
+  std::size_t bouncing_ = 0;          // shapes with a restitution above 0
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 

@@ -17,6 +17,10 @@ namespace {
 bool collides(const StepContext& c) {
   return c.collides;
 }
+// Contacts bounce only where a shape's restitution is above 0 (the larger of the two counts).
+bool bounces(const StepContext& c) {
+  return c.collides && c.shapes.any_bounce();
+}
 bool solves_islands(const StepContext& c) {
   return c.collides && c.settings.direct_solve_points > 0;
 }
@@ -204,7 +208,7 @@ constexpr std::array kStages{
                 "bodies handed to the solver as speculative contacts");
           },
           resolve_local_impacts},
-    Stage{"impacts among touching bodies", "IM:col2D", kLocalPass | kSubStepPass, collides,
+    Stage{"impacts among touching bodies", "IM:col2D", kLocalPass | kSubStepPass, bounces,
           [](const StepContext&) {
             return std::string("resting bodies struck, pair after pair (a Newton's cradle)");
           },
@@ -252,7 +256,7 @@ constexpr std::array kStages{
                    " passes, ending once a pass changes no velocity by more than the tolerance";
           },
           on_contacts<&ContactSolver::solve_velocities>},
-    Stage{"contact solver: restitution", "IM:col2D", kLocalPass | kSubStepPass, collides,
+    Stage{"contact solver: restitution", "IM:col2D", kLocalPass | kSubStepPass, bounces,
           [](const StepContext&) {
             return std::string("the bounce of approaching points, in one pass after the others");
           },
