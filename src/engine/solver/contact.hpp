@@ -21,6 +21,13 @@ inline Vec2 contact_tangent(const Vec2& normal) {
   return {-normal.y(), normal.x()};
 }
 
+/// The normal velocity [m/s] the solver drives a point of overlap `depth` [m] to at least over a
+/// step of h [s]: 0 where it touches or overlaps, and where it is apart by at most `touching_gap`
+/// [m]; else the (negative) speed that closes its gap over the step.
+inline double closing_target(double depth, double h, double touching_gap) {
+  return depth < -touching_gap ? depth / h : 0.0;
+}
+
 /// How a shape's deepest point inside the other moves with its body, which the position passes
 /// follow (correct_positions).
 enum class AnchorKind : std::uint8_t {

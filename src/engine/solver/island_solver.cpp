@@ -183,6 +183,17 @@ void list_points(const ContactSet& contacts, const ContactIslands& islands, std:
   }
 }
 
+// Sets the targets of the points of scratch.rows to close every gap over the step h [s], however
+// small. An island solved at every step meets them exactly: the passes' tolerance that counts a
+// gap under a tenth of a micrometre as touching would leave a column resting on gaps of round-off
+// (heavy_stack's top box 2e-8 m from the oracle's at 10 s, against 3e-9 m).
+void close_gaps_exactly(ContactSet& contacts, const IslandScratch& scratch, double h) {
+  for (const IslandScratch::Row& row : scratch.rows) {
+    ContactPointState& p = contacts.points(contacts[row.contact])[row.point];
+    p.target_normal_velocity = closing_target(p.depth, h, 0.0);
+  }
+}
+
 // Solves the island of scratch.rows in at most `max_rounds` rounds and applies its impulses to
 // `s`; returns whether it settled.
 bool solve_listed_island(ContactSet& contacts, const BodyInertia& inertia, int max_rounds,
@@ -235,6 +246,7 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
       const Reason reason = reason_to_solve(contacts, islands, r, bodies, s, active);
       if (reason == Reason::kNone) continue;
       list_points(contacts, islands, r, room);
+      if (reason != Reason::kResting) close_gaps_exactly(contacts, room, bodies.h);
       // An island let in by its uneven masses, which sequential impulses cannot hold up, is
       // worth more rounds than one they can.
       const bool settled = solve_listed_island(

@@ -81,11 +81,12 @@ struct DirectSolveLimits {
   double unheld_speed;           ///< m/s
 };
 
-/// The bodies as solve_small_islands reads them: their inertias, and their motion at the start of
-/// the step.
+/// The bodies as solve_small_islands reads them: their inertias, their motion at the start of the
+/// step, and the step's length.
 struct IslandBodies {
   const BodyInertia& inertia;
   const MotionState& start;
+  double h;  ///< s
 };
 
 /// For each of the `islands` of `contacts` (contacts joined through the dynamic bodies they share)
@@ -93,7 +94,9 @@ struct IslandBodies {
 ///   w = w₀ + K (λ − λ₀) ≥ 0,  λ ≥ 0,  λ · w = 0
 /// where w is each point's normal velocity less its target, w₀ and λ₀ the current ones, and K
 /// the effective-mass matrix of the points (GD:impulse's denominators on its diagonal), with the
-/// friction impulses held; then clamps the friction impulses to the new friction cones. Found by
+/// friction impulses held; then clamps the friction impulses to the new friction cones. An island
+/// solved for its size or its uneven masses closes every gap over the step (closing_target with
+/// no touching gap), as the passes then do too. Found by
 /// solve_normal_lcp; an island it does not solve (within its round limit, or with K on a
 /// pushing set not positive definite) keeps its impulses for the sequential passes. Applies the
 /// changes to the velocities of `s` (DD:impulseV, DD:torque, TM:NewtonThirdLawMot). The islands

@@ -265,18 +265,16 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const Con
 
 namespace {
 
-// A point apart by less than this share of the slop counts as touching: its target is 0, not a
-// closing speed of its gap over the step. A settled pile's points lie a tenth of a micrometre
-// apart or so, and closing each by its own gap asks for speeds that no motion of the bodies gives
-// all at once; the passes then drift by the same amount at every pass and never settle.
-constexpr double kTouchingGapShare = 0.01;
-
 template <typename Order>
 void prepare_in(const Order& order, ContactSet& contacts, const ContactPreparation& in) {
   const BodyShapes& shapes = in.shapes;
   const BodyInertia& inertia = in.inertia;
   const Settings& settings = in.settings;
-  const double touching_gap = kTouchingGapShare * settings.linear_slop;
+  // A point apart by less than the passes' velocity tolerance closes over the step counts as
+  // touching (target 0): closing its gap or not changes no velocity by more than they are asked
+  // to resolve, while in a settled pile, whose points lie 0.1 to 0.2 µm apart, closing each by its
+  // own gap keeps the passes switching points between pushing and free at that very scale.
+  const double touching_gap = settings.velocity_tolerance * in.h;
   order.run([&](std::uint32_t i) {
     const Contact& c = contacts[i];
     const double restitution = contact_restitution(shapes, c);
@@ -288,7 +286,7 @@ void prepare_in(const Order& order, ContactSet& contacts, const ContactPreparati
       p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
       p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
       const double approach = contact_normal_velocity(in.before, c, p);
-      p.target_normal_velocity = p.depth < -touching_gap ? p.depth / in.h : 0.0;
+      p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap);
       // A speculative point (still apart) bounces too if the solver ends up pushing on it:
       // apply_restitution acts only where the normal impulse is positive.
       p.bounce_velocity = approach < -settings.restitution_threshold ? restitution * approach : 0.0;
