@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -47,12 +48,13 @@ double largest(const std::vector<double>& v) {
   return *std::max_element(v.begin(), v.end());
 }
 
-// The benchmark keeps its own copy of the workload, so that a variant made here outlives the call.
-void add(Workload w, Engine engine, std::string_view label, int threads) {
-  const std::string name = w.name + "/" + std::string(label);
+// The benchmarks share their workload, so that a variant made here outlives the call without a
+// copy of the scene per engine.
+void add(std::shared_ptr<const Workload> w, Engine engine, std::string_view label, int threads) {
+  const std::string name = w->name + "/" + std::string(label);
   benchmark::RegisterBenchmark(name.c_str(),
                                [w = std::move(w), engine, threads](benchmark::State& s) {
-                                 run_workload(s, w, engine, threads);
+                                 run_workload(s, *w, engine, threads);
                                })
       ->Iterations(1)
       ->UseManualTime()
@@ -65,11 +67,12 @@ void add(Workload w, Engine engine, std::string_view label, int threads) {
 
 void register_benchmarks(const std::vector<Workload>& list) {
   for (const Workload& w : list) {
-    for (Engine engine : kEngines) add(w, engine, engine_label(engine), 1);
-    add(w, Engine::Ours, kOursTwoThreads, 2);
+    const auto shared = std::make_shared<const Workload>(w);
+    for (Engine engine : kEngines) add(shared, engine, engine_label(engine), 1);
+    add(shared, Engine::Ours, kOursTwoThreads, 2);
     for (const OursIntegrator& variant : kOursIntegrators) {
-      Workload with = w;
-      with.scene.settings.integrator = variant.integrator;
+      auto with = std::make_shared<Workload>(w);
+      with->scene.settings.integrator = variant.integrator;
       add(std::move(with), Engine::Ours, variant.label, 1);
     }
   }

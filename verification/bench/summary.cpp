@@ -66,9 +66,8 @@ std::vector<Figures> figures(const std::vector<Workload>& list,
 void print_summary(std::ostream& out, const std::vector<Figures>& all) {
   out << "\nSummary: wall time of one whole run [ms]; ours/engine = our median / the engine's "
          "(above 1: ours is slower; on the rows ours-2-threads, the speed-up of a second thread; "
-         "on "
-         "the rows ours-symplectic-euler and ours-rk4, the default integrator's time over that "
-         "integrator's); "
+         "on the rows ours-symplectic-euler and ours-rk4, the default integrator's time over "
+         "that integrator's); "
          "heap the engine holds at the end of a run [KiB], and per body [B]\n";
   char line[200];
   std::snprintf(line, sizeof line, "%-20s %-21s %4s %10s %10s %10s %9s %11s %14s %10s %9s\n",
