@@ -40,8 +40,9 @@ struct Settings {
   /// well with them at a fraction of the cost.
   int direct_solve_uneven_points = 512;
   double direct_solve_mass_ratio = 10.0;  ///< the mass ratio above which an island is uneven
-  /// Islands at rest (every body slower than sleep_speed and sleep_angular_speed) whose carried-
-  /// over impulses do not hold them get the same solve up to this many points: a pile set down
+  /// Islands at rest (every body slower than sleep_speed and sleep_angular_speed, no point
+  /// overlapping by more than linear_slop) whose carried-over impulses do not hold them get the
+  /// same solve up to this many points: a pile set down
   /// at once, or knocked, which sequential impulses would take hundreds of steps to settle, a
   /// 100-row pyramid sinking 1.4 m on the way. Once held, the passes keep it in a pass or two.
   int direct_solve_resting_points = 32768;

@@ -98,14 +98,14 @@ struct OursBound {
 };
 constexpr OursBound kOursBounds[] = {
     // The capped pyramids' uneven islands are solved exactly: what moves them is round-off.
-    {"pyramid capped by a box 100× denser", 5.1e-10},  // 1.69e-10 m
-    {"pyramid capped by a box 200× denser", 9.8e-10},  // 3.27e-10 m
-    {"pyramid capped by a box 300× denser", 1.5e-9},   // 5.02e-10 m
+    {"pyramid capped by a box 100× denser", 5.1e-10},  // 2.18e-10 m
+    {"pyramid capped by a box 200× denser", 9.8e-10},  // 4.13e-10 m
+    {"pyramid capped by a box 300× denser", 1.5e-9},   // 5.79e-10 m
     {"20 m box on two small triangles", 4.2e-9},       // 1.39e-9 m
-    {"overlap recovery", 0.0085},    // 0.00451 m/s; the bound of its 2.83e-3 m/s at 67533cb kept
-    {"card house", 0.016},           // 0.00527 m
-    {"arch of trapezoids", 0.0078},  // 0.00258 m
-    {"discs confined in a box, more than fit", 0.3},  // 0.2 m, the overlap they start with
+    {"overlap recovery", 0.0085},                      // 0.00283 m/s
+    {"card house", 0.016},                             // 0.00527 m
+    {"arch of trapezoids", 0.0078},                    // 0.00258 m
+    {"discs confined in a box, more than fit", 0.3},   // 0.2 m, the overlap they start with
     // Set down at rest, the pyramids are solved exactly at their first step (resting islands).
     {"pyramid of base 10, at the origin", 7e-10},           // 2.33e-10 m
     {"pyramid of base 10, 10 km from the origin", 3.7e-9},  // 1.24e-9 m

@@ -26,13 +26,14 @@ void ContactSolver::solve_small_islands(StepContext& c) {
   // A resting island is held when no point closes faster than a tenth of what gravity adds to
   // it in the step.
   const double unheld_speed = 0.1 * settings.gravity.norm() * c.h;
-  gp::solve_small_islands(c.contacts, batches_.islands(), {c.inertia, c.start, c.h},
-                          {static_cast<std::size_t>(settings.direct_solve_points),
-                           static_cast<std::size_t>(settings.direct_solve_uneven_points),
-                           settings.direct_solve_mass_ratio,
-                           static_cast<std::size_t>(settings.direct_solve_resting_points),
-                           settings.sleep_speed, settings.sleep_angular_speed, unheld_speed},
-                          c.state, islands_);
+  gp::solve_small_islands(
+      c.contacts, batches_.islands(), {c.inertia, c.start, c.h},
+      {static_cast<std::size_t>(settings.direct_solve_points),
+       static_cast<std::size_t>(settings.direct_solve_uneven_points),
+       settings.direct_solve_mass_ratio,
+       static_cast<std::size_t>(settings.direct_solve_resting_points), settings.sleep_speed,
+       settings.sleep_angular_speed, unheld_speed, settings.linear_slop},
+      c.state, islands_);
 }
 
 void ContactSolver::solve_velocities(StepContext& c) {

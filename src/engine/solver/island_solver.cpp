@@ -107,7 +107,8 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int ma
 // What one walk over an island's contacts finds, for reason_to_solve.
 struct IslandSurvey {
   bool uneven;   // a dynamic body more than DirectSolveLimits::mass_ratio times as heavy as another
-  bool at_rest;  // every movable body slower than the resting speeds at the start of the step
+  bool at_rest;  // every movable body slower than the resting speeds at the start of the step,
+                 // and no point deeper than the resting depth
   bool held;     // no point closing faster than DirectSolveLimits::unheld_speed now
 };
 
@@ -131,6 +132,9 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
                 std::abs(bodies.start.angular_velocity[b]) < limits.resting_angular_speed;
     }
     for (const ContactPointState& p : contacts.points(c)) {
+      // Bodies overlapping by more than the position passes leave are about to be moved apart:
+      // impulses solved exactly for where they are would not fit where they go.
+      at_rest = at_rest && p.depth <= limits.resting_depth;
       held = held &&
              contact_normal_velocity(s, c, p) - p.target_normal_velocity >= -limits.unheld_speed;
     }

@@ -67,8 +67,9 @@ inline constexpr int kRestingPauseSteps = 64;
 /// Which islands solve_small_islands solves: those of at most `points` contact points; those of
 /// at most `uneven_points` whose heaviest dynamic body is more than `mass_ratio` times as heavy
 /// as their lightest; and those of at most `resting_points` at rest (every body slower than
-/// `resting_speed` and `resting_angular_speed` at the start of the step) whose warm start does
-/// not hold them (a point closing faster than `unheld_speed` after it). None when `points` is 0.
+/// `resting_speed` and `resting_angular_speed` at the start of the step, and no point overlapping
+/// by more than `resting_depth`) whose warm start does not hold them (a point closing faster than
+/// `unheld_speed` after it). None when `points` is 0.
 /// (Settings::direct_solve_points, direct_solve_uneven_points, direct_solve_mass_ratio,
 /// direct_solve_resting_points.)
 struct DirectSolveLimits {
@@ -79,6 +80,7 @@ struct DirectSolveLimits {
   double resting_speed;          ///< m/s
   double resting_angular_speed;  ///< rad/s
   double unheld_speed;           ///< m/s
+  double resting_depth;          ///< m
 };
 
 /// The bodies as solve_small_islands reads them: their inertias, their motion at the start of the
