@@ -174,7 +174,7 @@ TEST_CASE("Body names are unique CSV fields", "[FR:Verify-Physical_Constraints]"
     check_error(
         scene_with(R"({"name": ")" + std::string(name) + R"(", "position": [0, 0], "mass": 1})"),
         "bodies[0].name", "must be non-empty, without commas, quotes or line breaks (a CSV field)",
-        "\"" + std::string(name) + "\"");  // the name's JSON text, shown as given
+        std::string("\"") + name + "\"");  // the name's JSON text, shown as given
   }
 }
 
