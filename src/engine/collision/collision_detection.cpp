@@ -118,7 +118,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
     auto old = previous.begin();
     for (const ShapePair& p : pairs) {
-      const ContactManifold m = collide(world[p.first], world[p.second], margin_);
+      const ContactManifold m = collide(world.geometry(p.first), world.geometry(p.second), margin_);
       if (m.count == 0) continue;
       Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
       const std::uint64_t pair = WarmStart::pair_key(p);
@@ -145,7 +145,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     };
     each_pair([&](std::size_t i) {
       const ShapePair& p = pairs[first + i];
-      manifolds_[i] = collide(world[p.first], world[p.second], margin_);
+      manifolds_[i] = collide(world.geometry(p.first), world.geometry(p.second), margin_);
       counts_[i] = static_cast<std::uint8_t>(manifolds_[i].count);
     });
     contacts.reserve(std::span(counts_).first(size), std::span(slots_).first(size));

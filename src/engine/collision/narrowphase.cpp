@@ -185,26 +185,26 @@ bool is_bare_line(const GeometryView& geometry) {
 
 }  // namespace
 
-ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin) {
-  const auto* circle_a = std::get_if<Circle>(&a.geometry);
-  const auto* circle_b = std::get_if<Circle>(&b.geometry);
+ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin) {
+  const auto* circle_a = std::get_if<Circle>(&a);
+  const auto* circle_b = std::get_if<Circle>(&b);
   if (circle_a != nullptr && circle_b != nullptr) {
     return collide_circles(*circle_a, *circle_b, margin);
   }
   if (circle_b != nullptr) {
     return visit_as_hull(
-        a.geometry, [&](const Hull& hull) { return collide_hull_circle(hull, *circle_b, margin); });
+        a, [&](const Hull& hull) { return collide_hull_circle(hull, *circle_b, margin); });
   }
   if (circle_a != nullptr) {
     ContactManifold manifold = visit_as_hull(
-        b.geometry, [&](const Hull& hull) { return collide_hull_circle(hull, *circle_a, margin); });
+        b, [&](const Hull& hull) { return collide_hull_circle(hull, *circle_a, margin); });
     // Only the normal turns: a contact with a circle has id {0, 0} whichever shape is A.
     manifold.normal = -manifold.normal;
     return manifold;
   }
-  if (is_bare_line(a.geometry) && is_bare_line(b.geometry)) return {};
-  return visit_as_hull(a.geometry, [&](const Hull& hull_a) {
-    return visit_as_hull(b.geometry,
+  if (is_bare_line(a) && is_bare_line(b)) return {};
+  return visit_as_hull(a, [&](const Hull& hull_a) {
+    return visit_as_hull(b,
                          [&](const Hull& hull_b) { return collide_hulls(hull_a, hull_b, margin); });
   });
 }

@@ -18,6 +18,10 @@ inline constexpr double kContactTolerance = 5e-4;
 /// shapes offer a face separating them equally (within kContactTolerance), where the reference
 /// face is taken from a: call with the same order every frame for stable feature ids.
 /// Does not allocate.
-ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin);
+ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin);
+/// The same for placed shapes, whose boxes it does not need.
+inline ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin) {
+  return collide(a.geometry, b.geometry, margin);
+}
 
 }  // namespace gp

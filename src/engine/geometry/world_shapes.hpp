@@ -47,6 +47,8 @@ class WorldShapes {
     const Vec2* box = polygon.normals.data() + polygon.normals.size();
     return {box[0], box[1]};
   }
+  /// The geometry of shape `i` as placed, without its box.
+  GeometryView geometry(std::size_t i) const { return shapes_[i].view(); }
   /// Shape `i` as placed, viewed: made when asked for, so hold it by value or by a const
   /// reference bound to the call.
   WorldShapeView operator[](std::size_t i) const { return {shapes_[i].view(), bounds(i)}; }
