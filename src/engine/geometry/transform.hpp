@@ -19,6 +19,9 @@ class Rotation {
   Vec2 rotate(const Vec2& v) const {
     return {cos_ * v.x() - sin_ * v.y(), sin_ * v.x() + cos_ * v.y()};
   }
+  /// The body's x and y axes in world axes: the columns of the rotation matrix.
+  Vec2 x_axis() const { return {cos_, sin_}; }
+  Vec2 y_axis() const { return {-sin_, cos_}; }
   /// A direction turned from world to body axes: the inverse of rotate().
   Vec2 unrotate(const Vec2& v) const {
     return {cos_ * v.x() + sin_ * v.y(), -sin_ * v.x() + cos_ * v.y()};
@@ -51,15 +54,21 @@ class Transform {
   /// leaves in place (a disc about its centre).
   explicit Transform(const Vec2& position) : position_(position) {}
   Transform(const Vec2& position, double angle)
-      : position_(position), angle_(angle), rotation_(angle) {}
+      : position_(position),
+        angle_(angle),
+        rotation_(angle),
+        x_axis_(rotation_.x_axis()),
+        y_axis_(rotation_.y_axis()) {}
 
   /// m, world.
   const Vec2& position() const { return position_; }
   /// rad, counter-clockwise.
   double angle() const { return angle_; }
 
-  /// A direction (e.g. a unit normal) turned from body to world axes; no translation.
-  Vec2 rotate(const Vec2& v) const { return rotation_.rotate(v); }
+  /// A direction (e.g. a unit normal) turned from body to world axes; no translation. As the
+  /// axes scaled and summed, the same values as Rotation::rotate: a pair built from two scalars
+  /// goes through the stack, and the wide load of it stalls on the narrow stores.
+  Vec2 rotate(const Vec2& v) const { return x_axis_ * v.x() + y_axis_ * v.y(); }
   /// A direction turned from world to body axes: the inverse of rotate().
   Vec2 unrotate(const Vec2& v) const { return rotation_.unrotate(v); }
   /// A point (m) mapped from body to world coordinates.
@@ -69,6 +78,8 @@ class Transform {
   Vec2 position_ = Vec2::Zero();
   double angle_ = 0.0;
   Rotation rotation_;
+  Vec2 x_axis_ = Vec2::UnitX();
+  Vec2 y_axis_ = Vec2::UnitY();
 };
 
 }  // namespace gp
