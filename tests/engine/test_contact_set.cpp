@@ -40,7 +40,7 @@ TEST_CASE("a contact placed in room a cleared contact left starts from zero", "[
   old.body_a = 7;
   old.friction = 0.5;
   set.points(old)[1].normal_impulse = 3.0;
-  set.set_block(old, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, true});
+  set.block(old) = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, true};
   set.clear();
   CHECK(set.empty());
   const gp::Contact& again = set.append(2);

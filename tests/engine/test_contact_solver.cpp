@@ -110,7 +110,7 @@ TEST_CASE("Dropping contacts from a set keeps each remaining contact with its ow
     gp::Contact& c = set.append(count);
     c.shape_a = i;
     for (int k = 0; k < count; ++k) set.points(c)[k].depth = static_cast<float>(10 * i + k);
-    if (count == 2) set.set_block(c, gp::NormalBlock{.k11 = static_cast<double>(i)});
+    if (count == 2) set.block(c) = gp::NormalBlock{.k11 = static_cast<double>(i)};
   }
   CHECK(set.point_count() == 8);
   set.erase_if([](const gp::Contact& c) { return c.shape_a == 0 || c.shape_a == 3; });

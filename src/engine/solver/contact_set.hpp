@@ -58,9 +58,9 @@ class ContactSet {
   /// of different slots may be placed on different threads at once.
   Contact& place(const ContactSlot& slot);
 
-  /// The block of a two-point contact, as set_block left it.
+  /// The block of a two-point contact, filled in where it is kept.
   const NormalBlock& block(const Contact& c) const { return blocks_[c.block]; }
-  void set_block(const Contact& c, const NormalBlock& block) { blocks_[c.block] = block; }
+  NormalBlock& block(const Contact& c) { return blocks_[c.block]; }
 
   /// Removes the contacts for which `drop(contact)` is true, keeping the others' order.
   template <typename Predicate>

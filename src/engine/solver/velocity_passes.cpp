@@ -244,9 +244,10 @@ bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
 
 namespace {
 
-NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const ContactPointState& p,
-                         const ContactPointState& q) {
-  NormalBlock k;
+// Into `k` where the contact set keeps it: a block made apart and copied in is read back with
+// wide loads that stall on the narrow stores that made it.
+void fill_normal_block(const BodyInertia& inertia, const Contact& c, const ContactPointState& p,
+                       const ContactPointState& q, NormalBlock& k) {
   k.k11 = 1.0 / p.normal_mass;
   k.k22 = 1.0 / q.normal_mass;
   k.k12 = normal_coupling(c, p, c, q, inertia);
@@ -257,8 +258,9 @@ NormalBlock normal_block(const BodyInertia& inertia, const Contact& c, const Con
     k.inverse11 = k.k22 / determinant;
     k.inverse12 = -k.k12 / determinant;
     k.inverse22 = k.k11 / determinant;
+  } else {
+    k.inverse11 = k.inverse12 = k.inverse22 = 0.0;
   }
-  return k;
 }
 
 }  // namespace
@@ -291,7 +293,7 @@ void prepare_in(const Order& order, ContactSet& contacts, const ContactPreparati
       // apply_restitution acts only where the normal impulse is positive.
       p.bounce_velocity = approach < -settings.restitution_threshold ? restitution * approach : 0.0;
     }
-    if (c.count() == 2) contacts.set_block(c, normal_block(inertia, c, points[0], points[1]));
+    if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
     return 0.0;
   });
 }
