@@ -5,8 +5,13 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
 #include "engine/capacity.hpp"
 #include "engine/collision/swept_boxes.hpp"
+#include "engine/threads.hpp"
 
 namespace gp {
 
@@ -27,28 +32,46 @@ void SweepAndPrune::find_pairs(const Boxes& boxes, std::vector<ShapePair>& pairs
 
 template <typename Boxes>
 SweepAndPrune::Survey SweepAndPrune::survey(const Boxes& boxes) const {
-  Survey found;
-  if (boxes.size() == 0) return found;
+  if (boxes.size() == 0) return Survey{};
   // One pass, as each box is made when it is read: the bottoms, and the heights that bands_suit
-  // weighs against the bands of the last call.
-  bool finite = true;
-  found.lowest = std::numeric_limits<double>::infinity();
-  found.highest = -found.lowest;
+  // weighs against the bands of the last call. `usable` holds whether the boxes are finite until
+  // the end; minima, maxima and counts come out the same however the boxes are shared out.
   const double h = band_height_;
-  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    const Aabb box = boxes.bounds(i);
-    finite = finite && box.min.allFinite() && box.max.allFinite();
-    const double bottom = box.min.y() - half_margin_;
-    found.lowest = std::min(found.lowest, bottom);
-    found.highest = std::max(found.highest, bottom);
-    const double height = grown_height(box);
-    found.up_to_band += height <= h;
-    found.below_quarter_band += height < 0.25 * h;
-  }
+  const auto survey_range = [&](std::uint32_t first, std::uint32_t last, Survey found) {
+    for (std::uint32_t i = first; i < last; ++i) {
+      const Aabb box = boxes.bounds(i);
+      found.usable = found.usable && box.min.allFinite() && box.max.allFinite();
+      const double bottom = box.min.y() - half_margin_;
+      found.lowest = std::min(found.lowest, bottom);
+      found.highest = std::max(found.highest, bottom);
+      const double height = grown_height(box);
+      found.up_to_band += height <= h;
+      found.below_quarter_band += height < 0.25 * h;
+    }
+    return found;
+  };
+  Survey none;
+  none.usable = true;
+  none.lowest = std::numeric_limits<double>::infinity();
+  none.highest = -none.lowest;
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  Survey found =
+      count < kParallelBoxes || one_thread()
+          ? survey_range(0, count, none)
+          : tbb::parallel_reduce(
+                tbb::blocked_range<std::uint32_t>(0, count, kBoxesPerTask), none,
+                [&](const tbb::blocked_range<std::uint32_t>& r, Survey found) {
+                  return survey_range(r.begin(), r.end(), found);
+                },
+                [](const Survey& a, const Survey& b) {
+                  return Survey{a.usable && b.usable, std::min(a.lowest, b.lowest),
+                                std::max(a.highest, b.highest), a.up_to_band + b.up_to_band,
+                                a.below_quarter_band + b.below_quarter_band};
+                });
   // A non-finite box comes from a state that the step reports as non-finite (NumericalError); the
   // band arithmetic would convert NaN or infinity to an integer, which is undefined. The same
   // holds when the boxes span more than the range of a double.
-  found.usable = finite && std::isfinite(found.highest - found.lowest);
+  found.usable = found.usable && std::isfinite(found.highest - found.lowest);
   return found;
 }
 
@@ -125,30 +148,61 @@ void SweepAndPrune::update_entries(const Boxes& boxes, double highest) {
     return;
   }
   // Each box of the last call has exactly one entry in each band of bands_[i]: those of its
-  // bands now are kept in place, where they are nearly sorted still.
-  std::size_t kept = 0;
-  for (const Entry& old : entries_) {
-    const std::uint32_t i = old.box();
-    if (i >= boxes.size()) continue;
-    const Aabb grown = boxes.bounds(i).fattened(half_margin_);
-    const BandRange now = bands_of(grown, last_band);
-    if (old.band < now.first || old.band > now.last) continue;
-    entries_[kept++] = entry(grown, old.band, i, now, boxes.is_static(i));
+  // bands now are kept in place, where they are nearly sorted still. Refreshed where they are,
+  // those that left their band marked (band −1, below every band), then the marked dropped.
+  const auto refresh = [&](std::size_t first, std::size_t last) {
+    for (std::size_t e = first; e < last; ++e) {
+      Entry& old = entries_[e];
+      const std::uint32_t i = old.box();
+      if (i >= boxes.size()) {
+        old.band = -1;
+        continue;
+      }
+      const Aabb grown = boxes.bounds(i).fattened(half_margin_);
+      const BandRange now = bands_of(grown, last_band);
+      if (old.band < now.first || old.band > now.last) {
+        old.band = -1;
+        continue;
+      }
+      old = entry(grown, old.band, i, now, boxes.is_static(i));
+    }
+  };
+  if (entries_.size() < kParallelBoxes || one_thread()) {
+    refresh(0, entries_.size());
+  } else {
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, entries_.size(), kBoxesPerTask),
+        [&](const tbb::blocked_range<std::size_t>& r) { refresh(r.begin(), r.end()); });
   }
-  entries_.resize(kept);
+  std::erase_if(entries_, [](const Entry& e) { return e.band < 0; });
   added_.clear();
   const std::size_t known = bands_.size();
   bands_.resize(boxes.size());
-  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    const BandRange before = i < known ? bands_[i] : BandRange{0, -1};
-    const Aabb grown = boxes.bounds(i).fattened(half_margin_);
-    const BandRange now = bands_of(grown, last_band);
-    for (std::int32_t band = now.first; band <= now.last; ++band) {
-      if (band < before.first || band > before.last) {
-        added_.push_back(entry(grown, band, i, now, boxes.is_static(i)));
+  const auto add_new_bands = [&](std::uint32_t first, std::uint32_t last,
+                                 std::vector<Entry>& added) {
+    for (std::uint32_t i = first; i < last; ++i) {
+      const BandRange before = i < known ? bands_[i] : BandRange{0, -1};
+      const Aabb grown = boxes.bounds(i).fattened(half_margin_);
+      const BandRange now = bands_of(grown, last_band);
+      for (std::int32_t band = now.first; band <= now.last; ++band) {
+        if (band < before.first || band > before.last) {
+          added.push_back(entry(grown, band, i, now, boxes.is_static(i)));
+        }
       }
+      bands_[i] = now;
     }
-    bands_[i] = now;
+  };
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  if (count < kParallelBoxes || one_thread()) {
+    add_new_bands(0, count, added_);
+  } else {
+    // Each thread its own list, gathered in any order: sort_entries sorts them.
+    for (auto& local : thread_added_) local.clear();
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, kBoxesPerTask),
+                      [&](const tbb::blocked_range<std::uint32_t>& r) {
+                        add_new_bands(r.begin(), r.end(), thread_added_.local());
+                      });
+    for (const auto& local : thread_added_) added_.insert(added_.end(), local.begin(), local.end());
   }
   sort_entries();
 }
@@ -214,12 +268,15 @@ void SweepAndPrune::sort_entries() {
   }
 }
 
-void SweepAndPrune::sweep(std::vector<ShapePair>& pairs) {
-  // The entries and the count in locals: pairs growing might, for all the compiler knows, change
-  // the members, which it would then reload at every candidate.
-  const std::span<const Entry> entries(entries_);
+namespace {
+
+// The pairs of `entries` from entries[first] to entries[last − 1] with the entries after them in
+// their band, appended to `pairs`; returns how many candidates it compared.
+template <typename Entry>
+std::size_t sweep_entries(std::span<const Entry> entries, std::size_t first, std::size_t last,
+                          std::vector<ShapePair>& pairs) {
   std::size_t tested = 0;
-  for (std::size_t i = 0; i < entries.size(); ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     const Entry& entry = entries[i];
     for (std::size_t j = i + 1;
          j < entries.size() && entries[j].band == entry.band && entries[j].left <= entry.right;
@@ -234,7 +291,28 @@ void SweepAndPrune::sweep(std::vector<ShapePair>& pairs) {
       append(pairs, {std::min(a, b), std::max(a, b)});
     }
   }
-  candidates_tested_ = tested;
+  return tested;
+}
+
+}  // namespace
+
+void SweepAndPrune::sweep(std::vector<ShapePair>& pairs) {
+  // The entries in a local: pairs growing might, for all the compiler knows, change the members,
+  // which it would then reload at every candidate.
+  const std::span<const Entry> entries(entries_);
+  if (entries.size() < kParallelBoxes || one_thread()) {
+    candidates_tested_ = sweep_entries(entries, 0, entries.size(), pairs);
+    return;
+  }
+  // Each thread its own list, appended in any order: the caller sorts the pairs.
+  for (auto& local : thread_pairs_) local.clear();
+  candidates_tested_ = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, entries.size(), kBoxesPerTask), std::size_t{0},
+      [&](const tbb::blocked_range<std::size_t>& r, std::size_t tested) {
+        return tested + sweep_entries(entries, r.begin(), r.end(), thread_pairs_.local());
+      },
+      [](std::size_t a, std::size_t b) { return a + b; });
+  for (const auto& local : thread_pairs_) pairs.insert(pairs.end(), local.begin(), local.end());
 }
 
 void SweepAndPrune::forget() {
