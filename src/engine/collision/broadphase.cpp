@@ -270,11 +270,11 @@ void SweepAndPrune::sort_entries() {
 
 namespace {
 
-// The pairs of `entries` from entries[first] to entries[last − 1] with the entries after them in
-// their band, appended to `pairs`; returns how many candidates it compared.
-template <typename Entry>
+// Calls `pair(a, b)` for each pair of `entries` from entries[first] to entries[last − 1] with
+// the entries after them in their band, a < b; returns how many candidates it compared.
+template <typename Entry, typename Pair>
 std::size_t sweep_entries(std::span<const Entry> entries, std::size_t first, std::size_t last,
-                          std::vector<ShapePair>& pairs) {
+                          const Pair& pair) {
   std::size_t tested = 0;
   for (std::size_t i = first; i < last; ++i) {
     const Entry& entry = entries[i];
@@ -288,7 +288,7 @@ std::size_t sweep_entries(std::span<const Entry> entries, std::size_t first, std
       if (!entry.has(Entry::kBottom) && !other.has(Entry::kBottom)) continue;
       const std::uint32_t a = entry.box();
       const std::uint32_t b = other.box();
-      append(pairs, {std::min(a, b), std::max(a, b)});
+      pair(std::min(a, b), std::max(a, b));
     }
   }
   return tested;
@@ -301,18 +301,39 @@ void SweepAndPrune::sweep(std::vector<ShapePair>& pairs) {
   // which it would then reload at every candidate.
   const std::span<const Entry> entries(entries_);
   if (entries.size() < kParallelBoxes || one_thread()) {
-    candidates_tested_ = sweep_entries(entries, 0, entries.size(), pairs);
+    candidates_tested_ =
+        sweep_entries(entries, 0, entries.size(), [&](std::uint32_t a, std::uint32_t b) {
+          append(pairs, {a, b});
+        });
     return;
   }
-  // Each thread its own list, appended in any order: the caller sorts the pairs.
-  for (auto& local : thread_pairs_) local.clear();
-  candidates_tested_ = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, entries.size(), kBoxesPerTask), std::size_t{0},
-      [&](const tbb::blocked_range<std::size_t>& r, std::size_t tested) {
-        return tested + sweep_entries(entries, r.begin(), r.end(), thread_pairs_.local());
-      },
-      [](std::size_t a, std::size_t b) { return a + b; });
-  for (const auto& local : thread_pairs_) pairs.insert(pairs.end(), local.begin(), local.end());
+  // Twice over, block by block: counting each block's pairs, then writing them where the counts
+  // before them end. Lists per thread would keep room for the pairs again, on every thread.
+  const std::size_t blocks = (entries.size() + kBoxesPerTask - 1) / kBoxesPerTask;
+  const auto each_block = [&](const auto& work) {
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t k) {
+      work(k, k * kBoxesPerTask, std::min(entries.size(), (k + 1) * kBoxesPerTask));
+    });
+  };
+  block_pairs_.assign(blocks + 1, 0);
+  block_tested_.resize(blocks);
+  each_block([&](std::size_t k, std::size_t first, std::size_t last) {
+    std::size_t count = 0;
+    block_tested_[k] =
+        sweep_entries(entries, first, last, [&count](std::uint32_t, std::uint32_t) { ++count; });
+    block_pairs_[k + 1] = count;
+  });
+  for (std::size_t k = 0; k < blocks; ++k) block_pairs_[k + 1] += block_pairs_[k];
+  reserve_for(pairs, block_pairs_[blocks]);
+  pairs.resize(block_pairs_[blocks]);
+  each_block([&](std::size_t k, std::size_t first, std::size_t last) {
+    std::size_t at = block_pairs_[k];
+    sweep_entries(entries, first, last, [&](std::uint32_t a, std::uint32_t b) {
+      pairs[at++] = {a, b};
+    });
+  });
+  candidates_tested_ = 0;
+  for (std::size_t k = 0; k < blocks; ++k) candidates_tested_ += block_tested_[k];
 }
 
 void SweepAndPrune::forget() {

@@ -194,9 +194,11 @@ class SweepAndPrune {
   std::vector<BandRange> bands_;  // per box of the last call, then of this one
   std::vector<Entry> entries_;    // sorted by band, then left, between calls
   std::vector<Entry> added_;      // scratch: entries of bands newly spanned
-  // Of a call shared out among threads: each thread's added entries, and its pairs.
+  // Of a call shared out among threads: each thread's added entries, and per block of entries
+  // swept, where its pairs start in the list (then one past the last) and its candidates.
   tbb::enumerable_thread_specific<std::vector<Entry>> thread_added_;
-  tbb::enumerable_thread_specific<std::vector<ShapePair>> thread_pairs_;
+  std::vector<std::size_t> block_pairs_;
+  std::vector<std::size_t> block_tested_;
 };
 
 }  // namespace gp
