@@ -53,12 +53,7 @@ class Transform {
   /// A translation to `position` (m) alone, without trigonometry: enough for a shape that turning
   /// leaves in place (a disc about its centre).
   explicit Transform(const Vec2& position) : position_(position) {}
-  Transform(const Vec2& position, double angle)
-      : position_(position),
-        angle_(angle),
-        rotation_(angle),
-        x_axis_(rotation_.x_axis()),
-        y_axis_(rotation_.y_axis()) {}
+  Transform(const Vec2& position, double angle) : Transform(position, angle, Rotation(angle)) {}
 
   /// m, world.
   const Vec2& position() const { return position_; }
@@ -69,15 +64,24 @@ class Transform {
   /// axes scaled and summed, the same values as Rotation::rotate: a pair built from two scalars
   /// goes through the stack, and the wide load of it stalls on the narrow stores.
   Vec2 rotate(const Vec2& v) const { return x_axis_ * v.x() + y_axis_ * v.y(); }
-  /// A direction turned from world to body axes: the inverse of rotate().
-  Vec2 unrotate(const Vec2& v) const { return rotation_.unrotate(v); }
+  /// A direction turned from world to body axes: the inverse of rotate(), its components the
+  /// axes' dot products with v (the same values as Rotation::unrotate).
+  Vec2 unrotate(const Vec2& v) const {
+    return {x_axis_.x() * v.x() + x_axis_.y() * v.y(), y_axis_.x() * v.x() + y_axis_.y() * v.y()};
+  }
   /// A point (m) mapped from body to world coordinates.
   Vec2 apply(const Vec2& p) const { return position_ + rotate(p); }
 
  private:
+  Transform(const Vec2& position, double angle, const Rotation& rotation)
+      : position_(position),
+        angle_(angle),
+        x_axis_(rotation.x_axis()),
+        y_axis_(rotation.y_axis()) {}
+
   Vec2 position_ = Vec2::Zero();
   double angle_ = 0.0;
-  Rotation rotation_;
+  // The rotation's columns: the body's axes in world axes.
   Vec2 x_axis_ = Vec2::UnitX();
   Vec2 y_axis_ = Vec2::UnitY();
 };
