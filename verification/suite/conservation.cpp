@@ -55,7 +55,8 @@ Scene elastic_box(double restitution_threshold) {
   s.bodies.push_back(wall("right", {10, -10}, {10, 10}, 1.0));
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 4; ++j) {
-      s.bodies.push_back(disc("d" + std::to_string(4 * i + j), {-6.0 + 4.0 * i, -6.0 + 4.0 * j},
+      s.bodies.push_back(disc(std::string("d") + std::to_string(4 * i + j),
+                              {-6.0 + 4.0 * i, -6.0 + 4.0 * j},
                               {std::sin(1.0 + 3.0 * i + j), std::cos(2.0 * i - j)}, 0.5, 1.0));
     }
   }

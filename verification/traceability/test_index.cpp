@@ -20,7 +20,7 @@ std::string braced_body(const std::string& source, std::size_t open) {
       i = std::min(source.find("*/", i + 2), source.size()) + 1;
     } else if (c == 'R' && next == '"') {
       const auto paren = source.find('(', i + 2);
-      const std::string close = ")" + source.substr(i + 2, paren - i - 2) + "\"";
+      const std::string close = std::string(")") + source.substr(i + 2, paren - i - 2) + "\"";
       i = std::min(source.find(close, paren), source.size()) + close.size() - 1;
     } else if (c == '"' || c == '\'') {
       for (++i; i < source.size() && source[i] != c; ++i) i += source[i] == '\\' ? 1 : 0;

@@ -42,7 +42,7 @@ struct Matrix {
     text += "\n";
     for (const auto& r : rows) {
       text += r;
-      for (const auto& c : columns) text += "," + mark(r, c);
+      for (const auto& c : columns) text.append(",").append(mark(r, c));
       text += "\n";
     }
     return text;
@@ -56,7 +56,7 @@ struct Matrix {
     text += "|\n";
     for (const auto& r : rows) {
       text += "|" + r;
-      for (const auto& c : columns) text += "|" + mark(r, c);
+      for (const auto& c : columns) text.append("|").append(mark(r, c));
       text += "|\n";
     }
     return text;
