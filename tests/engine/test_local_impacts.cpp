@@ -6,6 +6,7 @@
 // exactly.
 #include <catch2/catch.hpp>
 
+#include "engine/space_impl.hpp"
 #include "gamephysics/gamephysics.hpp"
 #include "gamephysics/models/dd/kinetic_energy.hpp"
 #include "gamephysics/models/dd/potential_energy.hpp"
@@ -142,6 +143,45 @@ TEST_CASE("A disc dropped fast on a disc resting on the floor stops on it and ad
   CHECK_THAT(space.state(above).velocity.y(), WithinAbs(0.0, 1e-15));
 }
 
+TEST_CASE("A disc turned back by an impact stays in the step unless it can pass a resting body",
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D]") {
+  // A disc at 24 m/s strikes the wall at x = 0 early in the step (τ = 1/480 s) and returns
+  // towards a disc resting on the floor, which the contact solver moves. In the rest of the step
+  // it can close 0.35 m on it, more than the 0.1 m half thickness of either.
+  const double h = 1.0 / 60;
+  const auto run = [h](double resting_x) {
+    auto space = std::make_unique<gp::Space>();
+    space->add_body(wall("wall", {0.0, -1.0}, {0.0, 2.0}, 1.0));
+    space->add_body(wall("floor", {-1.0, 0.0}, {2.0, 0.0}, 0.0));
+    const auto resting = space->add_body(disc("resting", {resting_x, 0.1}, {0.0, 0.0}, 1.0));
+    const auto flying = space->add_body(disc("flying", {0.15, 0.15}, {-24.0, 0.0}, 1.0));
+    space->step(h);
+    return std::tuple{std::move(space), resting, flying};
+  };
+  const auto centre_gap = [](const gp::Space& space, gp::BodyId a, gp::BodyId b) {
+    return (space.state(a).position - space.state(b).position).norm() - 0.2;
+  };
+  SECTION("0.30 m apart at the impact: it cannot pass, and the step stays one piece") {
+    const auto [space, resting, flying] = run(0.6);
+    CHECK(gp::SpaceInternals::runner(*space).sub_steps() == 0);
+    // The closed-form reflection: back to x = 0.1 at τ, then 24 m/s for the other 7/480 s.
+    CHECK_THAT(space->state(flying).velocity.x(), WithinAbs(24.0, 1e-13));
+    CHECK_THAT(space->state(flying).position.x(), WithinAbs(0.45, 1e-13));
+    // The overlap left to the next step's contact (4.2 cm) is less than half a disc, and that
+    // contact turns the flying disc back without letting it through.
+    CHECK(centre_gap(*space, resting, flying) > -0.1);
+    for (int k = 0; k < 30; ++k) space->step(h);
+    CHECK(space->state(flying).position.x() < space->state(resting).position.x());
+  }
+  SECTION("0.20 m apart at the impact: it could pass, and the step is sub-stepped") {
+    const auto [space, resting, flying] = run(0.5);
+    CHECK(gp::SpaceInternals::runner(*space).sub_steps() > 0);
+    // The sub-steps find the second impact: the discs end the step apart.
+    CHECK(centre_gap(*space, resting, flying) > -2e-4);
+    CHECK(space->state(flying).position.x() < space->state(resting).position.x());
+  }
+}
+
 TEST_CASE("A step allocates nothing once the scene is warmed up", "[FR:Simulation-Space]") {
   gp::Settings settings;
   settings.gravity = {0.0, -9.81};
@@ -150,8 +190,8 @@ TEST_CASE("A step allocates nothing once the scene is warmed up", "[FR:Simulatio
   space.add_body(wall("left", {-2.0, 0.0}, {-2.0, 4.0}, 0.0));
   space.add_body(wall("right", {2.0, 0.0}, {2.0, 4.0}, 0.0));
   for (int i = 0; i < 60; ++i) {
-    space.add_body(disc("d" + std::to_string(i), {-1.5 + 0.3 * (i % 10), 0.5 + 0.3 * (i / 10)},
-                        {0.0, 0.0}, 0.2, 0.5));
+    space.add_body(disc(std::string("d") + std::to_string(i),
+                        {-1.5 + 0.3 * (i % 10), 0.5 + 0.3 * (i / 10)}, {0.0, 0.0}, 0.2, 0.5));
   }
   for (int k = 0; k < 600; ++k) space.step(1.0 / 60);
   const long before = gp::test::allocations();

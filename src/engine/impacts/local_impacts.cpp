@@ -239,13 +239,15 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
         if (roles_[other] == BodyRole::kResolving && other < b) continue;
         if (in_solver(ctx, k)) {
           // Its path is the solver's, not known here: safe to leave to the next step only if
-          // neither can have moved through the other by then.
+          // neither can have moved through the other by then, which takes closing the gap
+          // between them at τ and then half the thinner one's thickness.
           const double reach_left =
               closing_speed_bound(ctx.shapes[i], ctx.shapes[k], motion, h) * (h - tau);
-          if (reach_left >=
-              std::min(half_thickness(ctx.shapes[i].local), half_thickness(ctx.shapes[k].local))) {
-            return false;
-          }
+          const double thinner =
+              std::min(half_thickness(ctx.shapes[i].local), half_thickness(ctx.shapes[k].local));
+          if (reach_left < thinner) continue;
+          const double gap = signed_distance(here, to_world(ctx.shapes[k].local, frame_at(k, tau)));
+          if (reach_left >= std::max(gap, 0.0) + thinner) return false;
           continue;
         }
         const WorldShape there = to_world(ctx.shapes[k].local, frame_at(k, tau));
