@@ -8,9 +8,6 @@
 #include <variant>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "engine/dynamics/force_model.hpp"
 #include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
@@ -95,14 +92,8 @@ void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
     }
   };
   // Once placed, each shape has its own room in `world`: the shapes are placed side by side.
-  if (first || one_thread()) {
-    place_shapes(0, records_.size());
-    return;
-  }
   constexpr std::size_t kShapesPerTask = 1024;  // a shape costs tens of nanoseconds
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, records_.size(), kShapesPerTask),
-      [&](const tbb::blocked_range<std::size_t>& r) { place_shapes(r.begin(), r.end()); });
+  for_blocks(records_.size(), kShapesPerTask, first, place_shapes);
 }
 
 }  // namespace gp

@@ -7,7 +7,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 #include "engine/capacity.hpp"
 #include "engine/collision/swept_boxes.hpp"
@@ -37,8 +36,8 @@ SweepAndPrune::Survey SweepAndPrune::survey(const Boxes& boxes) const {
   // weighs against the bands of the last call. `usable` holds whether the boxes are finite until
   // the end; minima, maxima and counts come out the same however the boxes are shared out.
   const double h = band_height_;
-  const auto survey_range = [&](std::uint32_t first, std::uint32_t last, Survey found) {
-    for (std::uint32_t i = first; i < last; ++i) {
+  const auto survey_range = [&](std::size_t first, std::size_t last, Survey found) {
+    for (auto i = static_cast<std::uint32_t>(first); i < last; ++i) {
       const Aabb box = boxes.bounds(i);
       found.usable = found.usable && box.min.allFinite() && box.max.allFinite();
       const double bottom = box.min.y() - half_margin_;
@@ -54,20 +53,13 @@ SweepAndPrune::Survey SweepAndPrune::survey(const Boxes& boxes) const {
   none.usable = true;
   none.lowest = std::numeric_limits<double>::infinity();
   none.highest = -none.lowest;
-  const auto count = static_cast<std::uint32_t>(boxes.size());
   Survey found =
-      count < kParallelBoxes || one_thread()
-          ? survey_range(0, count, none)
-          : tbb::parallel_reduce(
-                tbb::blocked_range<std::uint32_t>(0, count, kBoxesPerTask), none,
-                [&](const tbb::blocked_range<std::uint32_t>& r, Survey found) {
-                  return survey_range(r.begin(), r.end(), found);
-                },
-                [](const Survey& a, const Survey& b) {
-                  return Survey{a.usable && b.usable, std::min(a.lowest, b.lowest),
-                                std::max(a.highest, b.highest), a.up_to_band + b.up_to_band,
-                                a.below_quarter_band + b.below_quarter_band};
-                });
+      reduce_blocks(boxes.size(), kBoxesPerTask, boxes.size() < kParallelBoxes, none, survey_range,
+                    [](const Survey& a, const Survey& b) {
+                      return Survey{a.usable && b.usable, std::min(a.lowest, b.lowest),
+                                    std::max(a.highest, b.highest), a.up_to_band + b.up_to_band,
+                                    a.below_quarter_band + b.below_quarter_band};
+                    });
   // A non-finite box comes from a state that the step reports as non-finite (NumericalError); the
   // band arithmetic would convert NaN or infinity to an integer, which is undefined. The same
   // holds when the boxes span more than the range of a double.
@@ -167,13 +159,7 @@ void SweepAndPrune::update_entries(const Boxes& boxes, double highest) {
       old = entry(grown, old.band, i, now, boxes.is_static(i));
     }
   };
-  if (entries_.size() < kParallelBoxes || one_thread()) {
-    refresh(0, entries_.size());
-  } else {
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, entries_.size(), kBoxesPerTask),
-        [&](const tbb::blocked_range<std::size_t>& r) { refresh(r.begin(), r.end()); });
-  }
+  for_blocks(entries_.size(), kBoxesPerTask, entries_.size() < kParallelBoxes, refresh);
   std::erase_if(entries_, [](const Entry& e) { return e.band < 0; });
   added_.clear();
   const std::size_t known = bands_.size();

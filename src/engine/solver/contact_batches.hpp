@@ -15,9 +15,6 @@
 #include <span>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include "engine/solver/contact_islands.hpp"
 #include "engine/threads.hpp"
 
@@ -88,14 +85,12 @@ class ContactBatches {
       // An island or a part is a task of its own; a colour's contacts, each a task of tens of
       // nanoseconds, are handed out by the hundred, as each hand-out costs about a microsecond.
       const std::size_t grain = stage < first_colour_stage_ ? 1 : kContactsPerChunk;
-      largest =
-          alone ? tasks(first, last, largest)
-                : std::max(largest, tbb::parallel_reduce(
-                                        tbb::blocked_range<std::size_t>(first, last, grain), 0.0,
-                                        [&](const tbb::blocked_range<std::size_t>& r, double l) {
-                                          return tasks(r.begin(), r.end(), l);
-                                        },
-                                        [](double a, double b) { return std::max(a, b); }));
+      largest = std::max(largest, reduce_blocks(
+                                      last - first, grain, alone, 0.0,
+                                      [&](std::size_t a, std::size_t b, double l) {
+                                        return tasks(first + a, first + b, l);
+                                      },
+                                      [](double a, double b) { return std::max(a, b); }));
       first = last;
     }
     return largest;

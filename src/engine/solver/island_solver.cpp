@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <limits>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include "engine/threads.hpp"
 
 namespace gp {
@@ -267,16 +264,10 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   };
   const std::size_t body_count = bodies.inertia.inverse_mass.size();
   const Tally tally =
-      one_thread() || body_count < kParallelBodies
-          ? solve_roots(0, body_count, Tally{})
-          : tbb::parallel_reduce(
-                tbb::blocked_range<std::size_t>(0, body_count, kRootsPerTask), Tally{},
-                [&](const tbb::blocked_range<std::size_t>& r, Tally t) {
-                  return solve_roots(r.begin(), r.end(), t);
-                },
-                [](Tally a, Tally b) {
-                  return Tally{a.solved + b.solved, a.resting_failed || b.resting_failed};
-                });
+      reduce_blocks(body_count, kRootsPerTask, body_count < kParallelBodies, Tally{}, solve_roots,
+                    [](Tally a, Tally b) {
+                      return Tally{a.solved + b.solved, a.resting_failed || b.resting_failed};
+                    });
   // One that does not settle would be tried again at every step, at up to 16 rounds of a large
   // factorisation each.
   if (tally.resting_failed) scratch.resting_pause = kRestingPauseSteps;

@@ -2,9 +2,7 @@
 
 #include "engine/capacity.hpp"
 #include "engine/collision/body_shapes.hpp"
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "engine/threads.hpp"
 
 namespace gp {
 
@@ -24,18 +22,16 @@ void keep_impulses(const ContactSet& contacts, std::vector<WarmStart>& kept) {
   kept.resize(contacts.point_count());
   // A contact's points follow those of the contact before it, so each point's warm start goes
   // to its own index, and the contacts can be kept side by side.
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, contacts.size(), kContactsPerTask),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          const Contact& c = contacts[i];
-          const std::uint64_t pair = WarmStart::pair_key({c.shape_a, c.shape_b});
-          WarmStart* out = kept.data() + c.first_point;
-          for (const ContactPointState& p : contacts.points(c)) {
-            *out++ = {WarmStart::point_key(pair, p.id.key()), p.normal_impulse, p.tangent_impulse};
-          }
-        }
-      });
+  for_blocks(contacts.size(), kContactsPerTask, false, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const Contact& c = contacts[i];
+      const std::uint64_t pair = WarmStart::pair_key({c.shape_a, c.shape_b});
+      WarmStart* out = kept.data() + c.first_point;
+      for (const ContactPointState& p : contacts.points(c)) {
+        *out++ = {WarmStart::point_key(pair, p.id.key()), p.normal_impulse, p.tangent_impulse};
+      }
+    }
+  });
 }
 
 }  // namespace gp
