@@ -1,6 +1,7 @@
 #include "engine/solver/island_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "engine/threads.hpp"
@@ -91,14 +92,16 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int ma
   const auto w0 = scratch.residual.head(n);
   const auto start = scratch.initial.head(n);
   const auto impulse = scratch.impulse.head(n);
+  const IslandAtRest at_rest{scratch.unloaded};
+  const NormalLcpOptions options{max_rounds, scratch.at_rest ? &at_rest : nullptr};
   if (n <= kDenseIslandPoints) {
     assemble_dense(contacts, inertia, scratch);
     return solve_normal_lcp(scratch.k_dense.topLeftCorner(n, n), w0, start, scratch.lcp, impulse,
-                            max_rounds)
+                            options)
         .solved;
   }
   assemble_sparse(contacts, inertia, scratch);
-  return solve_normal_lcp(scratch.k_sparse, w0, start, scratch.lcp, impulse, max_rounds).solved;
+  return solve_normal_lcp(scratch.k_sparse, w0, start, scratch.lcp, impulse, options).solved;
 }
 
 // What one walk over an island's contacts finds, for reason_to_solve.
@@ -150,6 +153,7 @@ void release_large(IslandScratch& scratch) {
   scratch.residual = Eigen::VectorXd();
   scratch.initial = Eigen::VectorXd();
   scratch.impulse = Eigen::VectorXd();
+  scratch.unloaded = std::vector<std::uint8_t>();
   scratch.lcp.release();
 }
 
@@ -181,6 +185,18 @@ void list_points(const ContactSet& contacts, const ContactIslands& islands, std:
     for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
       scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
     }
+  }
+}
+
+// Marks the points of scratch.rows of a resting island whose normals are square to `gravity`
+// [m/s²], within a thousandth of a radian, in scratch.unloaded: gravity alone loads such an
+// island, and not along them.
+void mark_unloaded(const ContactSet& contacts, const Vec2& gravity, IslandScratch& scratch) {
+  const double square = 1e-3 * gravity.norm();
+  scratch.unloaded.clear();
+  for (const IslandScratch::Row& row : scratch.rows) {
+    const double along = contacts[row.contact].normal.dot(gravity);
+    scratch.unloaded.push_back(std::abs(along) <= square ? 1 : 0);
   }
 }
 
@@ -247,7 +263,12 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
       const Reason reason = reason_to_solve(contacts, islands, r, bodies, s, active);
       if (reason == Reason::kNone) continue;
       list_points(contacts, islands, r, room);
-      if (reason != Reason::kResting) close_gaps_exactly(contacts, room, bodies.h);
+      room.at_rest = reason == Reason::kResting;
+      if (room.at_rest) {
+        mark_unloaded(contacts, bodies.gravity, room);
+      } else {
+        close_gaps_exactly(contacts, room, bodies.h);
+      }
       // An island let in by its uneven masses, which sequential impulses cannot hold up, is
       // worth more rounds than one they can.
       const bool settled = solve_listed_island(

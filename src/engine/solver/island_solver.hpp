@@ -6,6 +6,7 @@
 // of a few dozen points costs less than those passes.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -47,6 +48,9 @@ struct IslandScratch {
   Eigen::VectorXd residual;  // m/s: w₀, each point's normal velocity less its target
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
   Eigen::VectorXd impulse;   // N·s: λ, the solution
+  bool at_rest = false;      // the island is solved as one at rest (IslandAtRest)
+  // Of an island at rest, per point: no gravity along its normal (IslandAtRest::unloaded).
+  std::vector<std::uint8_t> unloaded;
   NormalLcpScratch lcp;
 };
 
@@ -84,11 +88,12 @@ struct DirectSolveLimits {
 };
 
 /// The bodies as solve_small_islands reads them: their inertias, their motion at the start of the
-/// step, and the step's length.
+/// step, the step's length, and the gravity they fall in.
 struct IslandBodies {
   const BodyInertia& inertia;
   const MotionState& start;
-  double h;  ///< s
+  double h;      ///< s
+  Vec2 gravity;  ///< m/s²
 };
 
 /// For each of the `islands` of `contacts` (contacts joined through the dynamic bodies they share)

@@ -1,6 +1,7 @@
 #include "engine/solver/normal_lcp.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace gp {
@@ -139,7 +140,8 @@ bool solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
 template <typename Matrix>
 NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
                           const Eigen::Ref<const Eigen::VectorXd>& start, NormalLcpScratch& scratch,
-                          Eigen::Ref<Eigen::VectorXd> impulse, int max_rounds) {
+                          Eigen::Ref<Eigen::VectorXd> impulse, const NormalLcpOptions& options) {
+  const IslandAtRest* const at_rest = options.at_rest;
   const Eigen::Index n = k.rows();
   scratch.reserve(n);
   const auto change = scratch.change.head(n);
@@ -156,17 +158,25 @@ NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorX
   }
   order_points(k, scratch);
   const double impulse_tolerance = kRoundOff * impulse_scale;
-  const double speed_tolerance = kRoundOff * speed_scale;
+  double speed_tolerance = kRoundOff * speed_scale;
   // A stack starting at rest pushes at every level, not only where gravity has already made the
   // points close.
   for (Eigen::Index i = 0; i < n; ++i) {
-    scratch.pushing[i] = start(i) > 0.0 || w0(i) <= speed_tolerance;
+    const bool unloaded = at_rest != nullptr && at_rest->unloaded[i] != 0;
+    scratch.pushing[i] =
+        start(i) > 0.0 || w0(i) < -speed_tolerance || (w0(i) <= speed_tolerance && !unloaded);
   }
   Eigen::Index fewest_wrong = n + 1;
   int block_rounds_left = 0;
-  for (int round = 1; round <= max_rounds; ++round) {
+  for (int round = 1; round <= options.max_rounds; ++round) {
     list_pushing(start, scratch);
     if (!solve_listed(k, w0, scratch)) return {false, round};
+    if (at_rest != nullptr) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        speed_scale = std::max(speed_scale, scratch.diagonal(i) * std::abs(change(i)));
+      }
+      speed_tolerance = kRoundOff * speed_scale;
+    }
     Eigen::Index wrong = 0;
     Eigen::Index last_wrong = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -193,7 +203,7 @@ NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorX
       scratch.pushing[last_wrong] ^= 1;
     }
   }
-  return {false, max_rounds};
+  return {false, options.max_rounds};
 }
 
 }  // namespace
@@ -225,15 +235,15 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
                                  const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
-                                 int max_rounds) {
-  return solve_lcp(k, w0, start, scratch, impulse, max_rounds);
+                                 const NormalLcpOptions& options) {
+  return solve_lcp(k, w0, start, scratch, impulse, options);
 }
 
 NormalLcpResult solve_normal_lcp(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
-                                 int max_rounds) {
-  return solve_lcp(k, w0, start, scratch, impulse, max_rounds);
+                                 const NormalLcpOptions& options) {
+  return solve_lcp(k, w0, start, scratch, impulse, options);
 }
 
 }  // namespace gp

@@ -3,7 +3,9 @@
 // principal pivoting. Kept apart from the island's assembly (island_solver.hpp) so that it can
 // be checked on problems whose solution is known.
 
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -75,6 +77,21 @@ inline constexpr int kNormalLcpMaxRounds = 16;
 /// but 15 of its 600 steps.
 inline constexpr int kNormalLcpUnevenRounds = 64;
 
+/// What solve_normal_lcp may take for granted of an island at rest (its bodies slow, no point
+/// overlapping by more than the slop): its points ask for no more than the bodies can give, and
+/// gravity alone loads them.
+struct IslandAtRest {
+  /// One flag per point: no applied force presses along its normal, as along the sides of a
+  /// pile's boxes under gravity. Such a point carries next to nothing.
+  std::span<const std::uint8_t> unloaded;
+};
+
+/// How solve_normal_lcp goes about a problem.
+struct NormalLcpOptions {
+  int max_rounds = kNormalLcpMaxRounds;   ///< the most pushing sets it tries
+  const IslandAtRest* at_rest = nullptr;  ///< set for an island at rest (see solve_normal_lcp)
+};
+
 /// Finds the normal impulses λ [N·s] of n contact points with
 ///   w = w₀ + K (λ − λ₀) ≥ 0,  λ ≥ 0,  λ · w = 0,
 /// w [m/s] being each point's normal velocity less its target, w₀ the current one at the current
@@ -88,17 +105,24 @@ inline constexpr int kNormalLcpUnevenRounds = 64;
 /// that pushed (λ₀ > 0) or are not moving apart (w₀ ≤ 0): all points on the wrong side change
 /// sets at once while their number falls and for 3 rounds after it last fell, then one at a time
 /// (Murty's rule, which cannot cycle for a definite K) until it falls below its best again; at
-/// most `max_rounds` rounds.
+/// most `options.max_rounds` rounds.
+///
+/// Of an island `options.at_rest`: the points it marks unloaded start free unless closing (starting
+/// them pushing would cost a round of every point, to let them go), and a free point may close as
+/// fast as the compliance lets a pushing one (the speed scale takes in 1e-10 K_ii |λ_i − λ₀_i|
+/// round by round): a pile's impulses reach its whole weight, and the compliance's speeds with
+/// them, while its w₀ is a step of gravity, so that measured against w₀ alone the last rounds chase
+/// the compliance's speeds (7 rounds of a 40-row pyramid instead of 3).
 NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
                                  const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
-                                 int max_rounds = kNormalLcpMaxRounds);
+                                 const NormalLcpOptions& options = {});
 /// The same for a sparse K, each round's pushing set in one fill-reducing order: for the large
 /// islands, where a round of the dense solve would cost the cube of their points.
 NormalLcpResult solve_normal_lcp(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
-                                 int max_rounds = kNormalLcpMaxRounds);
+                                 const NormalLcpOptions& options = {});
 
 }  // namespace gp
