@@ -104,42 +104,61 @@ bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int ma
   return solve_normal_lcp(scratch.k_sparse, w0, start, scratch.lcp, impulse, options).solved;
 }
 
+// Contacts of an island a task of its survey walks: a contact costs tens of nanoseconds, handing
+// out a task about a microsecond.
+constexpr std::size_t kSurveyContactsPerTask = 2048;
+
 // What one walk over an island's contacts finds, for reason_to_solve.
 struct IslandSurvey {
   bool uneven;   // a dynamic body more than DirectSolveLimits::mass_ratio times as heavy as another
   bool at_rest;  // every movable body slower than the resting speeds at the start of the step,
                  // and no point deeper than the resting depth
-  bool held;     // no point closing faster than DirectSolveLimits::unheld_speed now
+  bool held;     // at rest: no point closing faster than DirectSolveLimits::unheld_speed now
 };
 
 IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
                     const IslandBodies& bodies, const MotionState& s,
                     const DirectSolveLimits& limits) {
-  double lightest = 0.0;  // as inverse masses [1/kg]
-  double heaviest = std::numeric_limits<double>::infinity();
-  bool at_rest = true;
-  bool held = true;
-  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
-    const Contact& c = contacts[islands.order[e]];
-    for (const BodyId b : {c.body_a, c.body_b}) {
-      if (!movable(bodies.inertia, b)) continue;
-      const double inverse_mass = bodies.inertia.inverse_mass[b];
-      if (inverse_mass > 0.0) {
-        lightest = std::max(lightest, inverse_mass);
-        heaviest = std::min(heaviest, inverse_mass);
+  struct Found {
+    double lightest = 0.0;  // as inverse masses [1/kg]
+    double heaviest = std::numeric_limits<double>::infinity();
+    bool at_rest = true;
+    bool held = true;  // of the contacts walked while at rest: only then does it count
+  };
+  const std::uint32_t first = islands.island_start[root];
+  const std::size_t count = islands.island_end[root] - first;
+  const auto walk = [&](std::size_t from, std::size_t to, Found found) {
+    for (std::size_t e = first + from; e < first + to; ++e) {
+      const Contact& c = contacts[islands.order[e]];
+      for (const BodyId b : {c.body_a, c.body_b}) {
+        if (!movable(bodies.inertia, b)) continue;
+        const double inverse_mass = bodies.inertia.inverse_mass[b];
+        if (inverse_mass > 0.0) {
+          found.lightest = std::max(found.lightest, inverse_mass);
+          found.heaviest = std::min(found.heaviest, inverse_mass);
+        }
+        found.at_rest = found.at_rest && bodies.start.velocity[b].norm() < limits.resting_speed &&
+                        std::abs(bodies.start.angular_velocity[b]) < limits.resting_angular_speed;
       }
-      at_rest = at_rest && bodies.start.velocity[b].norm() < limits.resting_speed &&
-                std::abs(bodies.start.angular_velocity[b]) < limits.resting_angular_speed;
+      for (const ContactPointState& p : contacts.points(c)) {
+        // Bodies overlapping by more than the position passes leave are about to be moved apart:
+        // impulses solved exactly for where they are would not fit where they go.
+        found.at_rest = found.at_rest && p.depth <= limits.resting_depth;
+        found.held = found.held && (!found.at_rest ||
+                                    contact_normal_velocity(s, c, p) - p.target_normal_velocity >=
+                                        -limits.unheld_speed);
+      }
     }
-    for (const ContactPointState& p : contacts.points(c)) {
-      // Bodies overlapping by more than the position passes leave are about to be moved apart:
-      // impulses solved exactly for where they are would not fit where they go.
-      at_rest = at_rest && p.depth <= limits.resting_depth;
-      held = held &&
-             contact_normal_velocity(s, c, p) - p.target_normal_velocity >= -limits.unheld_speed;
-    }
-  }
-  return {lightest > limits.mass_ratio * heaviest, at_rest, held};
+    return found;
+  };
+  // Every one of a resting pile's points is read at every step: a large pile's on the threads.
+  const Found found = reduce_blocks(
+      count, kSurveyContactsPerTask, count < 2 * kSurveyContactsPerTask, Found{}, walk,
+      [](const Found& x, const Found& y) {
+        return Found{std::max(x.lightest, y.lightest), std::min(x.heaviest, y.heaviest),
+                     x.at_rest && y.at_rest, x.held && y.held};
+      });
+  return {found.lightest > limits.mass_ratio * found.heaviest, found.at_rest, found.held};
 }
 
 // Frees the room a resting island's solve grew `scratch` to, keeping the dense islands' (and so
