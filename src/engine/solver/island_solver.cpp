@@ -209,13 +209,14 @@ void list_points(const ContactSet& contacts, const ContactIslands& islands, std:
 
 // Marks the points of scratch.rows of a resting island whose normals are square to `gravity`
 // [m/s²], within a thousandth of a radian, in scratch.unloaded: gravity alone loads such an
-// island, and not along them.
+// island, and not along them. Without gravity none is marked: nothing then tells which points a
+// push from one side would load.
 void mark_unloaded(const ContactSet& contacts, const Vec2& gravity, IslandScratch& scratch) {
   const double square = 1e-3 * gravity.norm();
   scratch.unloaded.clear();
   for (const IslandScratch::Row& row : scratch.rows) {
     const double along = contacts[row.contact].normal.dot(gravity);
-    scratch.unloaded.push_back(std::abs(along) <= square ? 1 : 0);
+    scratch.unloaded.push_back(square > 0.0 && std::abs(along) <= square ? 1 : 0);
   }
 }
 
