@@ -109,10 +109,11 @@ struct NormalLcpOptions {
 ///
 /// Of an island `options.at_rest`: the points it marks unloaded start free unless closing (starting
 /// them pushing would cost a round of every point, to let them go), and a free point may close as
-/// fast as the compliance lets a pushing one (the speed scale takes in 1e-10 K_ii |λ_i − λ₀_i|
-/// round by round): a pile's impulses reach its whole weight, and the compliance's speeds with
-/// them, while its w₀ is a step of gravity, so that measured against w₀ alone the last rounds chase
-/// the compliance's speeds (7 rounds of a 40-row pyramid instead of 3).
+/// fast as the compliance lets a pushing one (round by round, the speed scale takes in each
+/// K_ii |λ_i − λ₀_i|, of which the compliance's speed is 1e-10): a pile's impulses reach its whole
+/// weight, and the compliance's speeds with them, while its w₀ is a step of gravity, so that
+/// measured against w₀ alone the last rounds chase the compliance's speeds (7 rounds of a 40-row
+/// pyramid instead of 3).
 NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
                                  const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
