@@ -84,16 +84,14 @@ void load_island(const ContactSet& contacts, const MotionState& s, IslandScratch
   }
 }
 
-// The normal impulses of the loaded island into scratch.impulse (solve_normal_lcp, in at most
-// `max_rounds` rounds). Returns false where that finds none.
-bool solve_island(const ContactSet& contacts, const BodyInertia& inertia, int max_rounds,
-                  IslandScratch& scratch) {
+// The normal impulses of the loaded island into scratch.impulse (solve_normal_lcp, as `options`
+// say). Returns false where that finds none.
+bool solve_island(const ContactSet& contacts, const BodyInertia& inertia,
+                  const NormalLcpOptions& options, IslandScratch& scratch) {
   const auto n = static_cast<Eigen::Index>(scratch.rows.size());
   const auto w0 = scratch.residual.head(n);
   const auto start = scratch.initial.head(n);
   const auto impulse = scratch.impulse.head(n);
-  const IslandAtRest at_rest{scratch.unloaded};
-  const NormalLcpOptions options{max_rounds, scratch.at_rest ? &at_rest : nullptr};
   if (n <= kDenseIslandPoints) {
     assemble_dense(contacts, inertia, scratch);
     return solve_normal_lcp(scratch.k_dense.topLeftCorner(n, n), w0, start, scratch.lcp, impulse,
@@ -231,17 +229,17 @@ void close_gaps_exactly(ContactSet& contacts, const IslandScratch& scratch, doub
   }
 }
 
-// Solves the island of scratch.rows in at most `max_rounds` rounds and applies its impulses to
-// `s`; returns whether it settled.
-bool solve_listed_island(ContactSet& contacts, const BodyInertia& inertia, int max_rounds,
-                         MotionState& s, IslandScratch& scratch) {
+// Solves the island of scratch.rows as `options` say and applies its impulses to `s`; returns
+// whether it settled.
+bool solve_listed_island(ContactSet& contacts, const BodyInertia& inertia,
+                         const NormalLcpOptions& options, MotionState& s, IslandScratch& scratch) {
   if (scratch.k_dense.rows() == 0) {
     // One stride for every dense island, on every thread (NormalLcpScratch::reserve_dense).
     scratch.k_dense.resize(kDenseIslandPoints, kDenseIslandPoints);
     scratch.lcp.reserve_dense(kDenseIslandPoints);
   }
   load_island(contacts, s, scratch);
-  if (!solve_island(contacts, inertia, max_rounds, scratch)) return false;
+  if (!solve_island(contacts, inertia, options, scratch)) return false;
   for (std::size_t i = 0; i < scratch.rows.size(); ++i) {
     const Contact& c = contacts[scratch.rows[i].contact];
     ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
@@ -283,17 +281,19 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
       const Reason reason = reason_to_solve(contacts, islands, r, bodies, s, active);
       if (reason == Reason::kNone) continue;
       list_points(contacts, islands, r, room);
-      room.at_rest = reason == Reason::kResting;
-      if (room.at_rest) {
+      // An island let in by its uneven masses, which sequential impulses cannot hold up, is
+      // worth more rounds than one they can.
+      NormalLcpOptions options;
+      if (reason == Reason::kUneven) options.max_rounds = kNormalLcpUnevenRounds;
+      IslandAtRest at_rest;
+      if (reason == Reason::kResting) {
         mark_unloaded(contacts, bodies.gravity, room);
+        at_rest.unloaded = room.unloaded;
+        options.at_rest = &at_rest;
       } else {
         close_gaps_exactly(contacts, room, bodies.h);
       }
-      // An island let in by its uneven masses, which sequential impulses cannot hold up, is
-      // worth more rounds than one they can.
-      const bool settled = solve_listed_island(
-          contacts, bodies.inertia,
-          reason == Reason::kUneven ? kNormalLcpUnevenRounds : kNormalLcpMaxRounds, s, room);
+      const bool settled = solve_listed_island(contacts, bodies.inertia, options, s, room);
       tally.solved += settled;
       if (reason == Reason::kResting) {
         // A resting island's solve comes once, not at every step: the room it grew to is freed.

@@ -48,7 +48,6 @@ struct IslandScratch {
   Eigen::VectorXd residual;  // m/s: w₀, each point's normal velocity less its target
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
   Eigen::VectorXd impulse;   // N·s: λ, the solution
-  bool at_rest = false;      // the island is solved as one at rest (IslandAtRest)
   // Of an island at rest, per point: no gravity along its normal (IslandAtRest::unloaded).
   std::vector<std::uint8_t> unloaded;
   NormalLcpScratch lcp;
