@@ -52,10 +52,9 @@ std::vector<std::uint32_t> in_order(std::size_t n) {
 // Islands of more contacts than this are coloured in these tests.
 constexpr std::size_t kColouredAbove = 4096;
 
-// The contact indices in the order one thread visits them.
-std::vector<std::uint32_t> visits(const Graph& g,
-                                  gp::IslandSplitting splitting = {0, kColouredAbove}) {
-  gp::ContactBatches batches;
+// The contact indices in the order one thread visits them, once `batches` is built for `g`.
+std::vector<std::uint32_t> visits(gp::ContactBatches& batches, const Graph& g,
+                                  gp::IslandSplitting splitting) {
   batches.build(g.contacts, g.inertia, g.positions, splitting);
   std::vector<std::uint32_t> order;
   tbb::task_arena(1).execute([&] {
@@ -65,6 +64,13 @@ std::vector<std::uint32_t> visits(const Graph& g,
     });
   });
   return order;
+}
+
+// The same, built afresh.
+std::vector<std::uint32_t> visits(const Graph& g,
+                                  gp::IslandSplitting splitting = {0, kColouredAbove}) {
+  gp::ContactBatches batches;
+  return visits(batches, g, splitting);
 }
 
 }  // namespace
@@ -185,4 +191,55 @@ TEST_CASE(
   std::vector<std::uint32_t> order = visits(g, {3, 0});
   std::sort(order.begin(), order.end());
   CHECK(order == in_order(8));
+}
+
+TEST_CASE("Contacts joining the same bodies keep their parts though the bodies moved") {
+  // The chain of 8 bodies parted in four (see above); then each body moves one place along x,
+  // the last two to the front, so that parts found afresh would be {7, 8}, {1, 2}, {3, 4}, {5, 6}.
+  Graph g = chain(8);
+  gp::ContactBatches batches;
+  const std::vector<std::uint32_t> before = visits(batches, g, {3, 0});
+  for (std::size_t b = 1; b < 9; ++b) g.positions[b].x() = static_cast<double>((b + 1) % 8);
+  REQUIRE(visits(g, {3, 0}) != before);
+  CHECK(visits(batches, g, {3, 0}) == before);
+}
+
+TEST_CASE("Contacts joining other bodies are grouped afresh") {
+  gp::ContactBatches batches;
+  // Bodies 1..4 on the ground, 1 - 2 and 3 - 4 linked; then 2 - 3 instead of 3 - 4.
+  const Graph first(5, {{1, 0}, {3, 4}, {2, 1}, {3, 0}, {4, 0}});
+  REQUIRE(visits(batches, first, {0, kColouredAbove}) == visits(first));
+  const Graph second(5, {{1, 0}, {2, 3}, {2, 1}, {3, 0}, {4, 0}});
+  CHECK(visits(batches, second, {0, kColouredAbove}) == visits(second));
+}
+
+TEST_CASE("A body that stops moving splits its island though the contacts stay") {
+  // A chain of 4, then body 2 held (as a body falling asleep or removed is): the islands {1}
+  // (its contacts with the ground and with body 2) and {3, 4}, of 2 points each, where there was
+  // one of 4.
+  Graph g = chain(4);
+  gp::ContactBatches batches;
+  batches.build(g.contacts, g.inertia, g.positions, {0, kColouredAbove});
+  REQUIRE(batches.islands().points[1] == 4);
+  g.inertia.inverse_mass[2] = g.inertia.inverse_moment[2] = 0.0;
+  batches.build(g.contacts, g.inertia, g.positions, {0, kColouredAbove});
+  CHECK(batches.islands().points[1] == 2);
+  CHECK(batches.islands().points[3] == 2);
+  CHECK(visits(batches, g, {0, kColouredAbove}) == visits(g));
+}
+
+TEST_CASE("A contact that gains a point is counted again in its island") {
+  Graph g = chain(3);
+  gp::ContactBatches batches;
+  batches.build(g.contacts, g.inertia, g.positions, {0, kColouredAbove});
+  REQUIRE(batches.islands().points[1] == 3);
+  // The same bodies joined, the second contact with two points.
+  gp::ContactSet two_points;
+  for (std::size_t i = 0; i < g.contacts.size(); ++i) {
+    gp::Contact& c = two_points.append(i == 1 ? 2 : 1);
+    c.body_a = g.contacts[i].body_a;
+    c.body_b = g.contacts[i].body_b;
+  }
+  batches.build(two_points, g.inertia, g.positions, {0, kColouredAbove});
+  CHECK(batches.islands().points[1] == 4);
 }

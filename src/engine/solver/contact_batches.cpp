@@ -7,6 +7,8 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "engine/capacity.hpp"
+
 namespace gp {
 
 namespace {
@@ -19,6 +21,10 @@ constexpr std::size_t kColours = 64;
 
 void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inertia,
                            std::span<const Vec2> positions, const IslandSplitting& splitting) {
+  if (join_as_before(contacts, inertia, splitting)) {
+    islands_.count_points(contacts, inertia);
+    return;
+  }
   islands_.find(contacts, inertia);
   order_.clear();
   task_end_.clear();
@@ -45,6 +51,29 @@ void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inerti
   part(contacts, inertia, positions, splitting.parted_above);
   first_colour_stage_ = stage_end_.size();
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
+}
+
+bool ContactBatches::join_as_before(const ContactSet& contacts, const BodyInertia& inertia,
+                                    const IslandSplitting& splitting) {
+  const std::size_t bodies = inertia.inverse_mass.size();
+  const auto joined = [](const Contact& c) {
+    return std::uint64_t{c.body_a} << 32 | std::uint64_t{c.body_b};
+  };
+  bool same = joined_.size() == contacts.size() && movable_.size() == bodies &&
+              built_splitting_.parted_above == splitting.parted_above &&
+              built_splitting_.coloured_above == splitting.coloured_above;
+  for (std::size_t i = 0; same && i < contacts.size(); ++i)
+    same = joined_[i] == joined(contacts[i]);
+  for (BodyId b = 0; same && b < bodies; ++b) same = (movable_[b] != 0) == movable(inertia, b);
+  if (same) return true;
+  reserve_for(joined_, contacts.size());
+  joined_.resize(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) joined_[i] = joined(contacts[i]);
+  reserve_for(movable_, bodies);
+  movable_.resize(bodies);
+  for (BodyId b = 0; b < bodies; ++b) movable_[b] = movable(inertia, b) ? 1 : 0;
+  built_splitting_ = splitting;
+  return false;
 }
 
 void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t first,

@@ -5,9 +5,9 @@
 // parts by its bodies' places, the parts solved side by side, each in the contacts' order, and
 // then the contacts that join them; one of more than Settings::coloured_island_contacts (when
 // set) is graph-coloured instead, so that its contacts are solved colour after colour, the
-// contacts of a colour side by side. The order depends on the contacts and the bodies' places
-// alone, never on the number of threads, so a step gives the same result to the bit on any
-// number of them.
+// contacts of a colour side by side. The order depends on the contacts and on the bodies' places
+// at the step the contacts last changed, never on the number of threads, so a step gives the same
+// result to the bit on any number of them.
 
 #include <algorithm>
 #include <cstddef>
@@ -60,7 +60,10 @@ class ContactBatches {
   /// between two parts joins the smallest group of parts holding both. Second stage: per cut
   /// island, one task of its contacts between parts, group by group from the smallest up. Last
   /// stages: each colour of the coloured islands, one task per contact. No two tasks of a stage
-  /// share a body that the solver moves. Reuses its arrays' room.
+  /// share a body that the solver moves. Reuses its arrays' room. While the contacts join the
+  /// same bodies in the same order as at the last build, the bodies as movable and the splitting
+  /// the same (a pile at rest), the islands, parts and colours are kept, and only the islands'
+  /// points counted again.
   void build(const ContactSet& contacts, const BodyInertia& inertia,
              std::span<const Vec2> positions, const IslandSplitting& splitting);
 
@@ -104,6 +107,10 @@ class ContactBatches {
     int depth;
     std::size_t first_group;
   };
+  /// Whether `contacts` join the bodies as the last build's did (see build); if not, remembers
+  /// how they do.
+  bool join_as_before(const ContactSet& contacts, const BodyInertia& inertia,
+                      const IslandSplitting& splitting);
   void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
             std::size_t parted_above);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
@@ -111,6 +118,9 @@ class ContactBatches {
                     int depth, std::uint32_t code);
 
   ContactIslands islands_;
+  std::vector<std::uint64_t> joined_;  // per contact of the last build: body_a << 32 | body_b
+  std::vector<char> movable_;          // per body at the last build: whether it was movable
+  IslandSplitting built_splitting_;
   std::vector<std::uint32_t> order_;      // contact indices, task after task
   std::vector<std::uint32_t> task_end_;   // per task: one past its last entry in order_
   std::vector<std::uint32_t> stage_end_;  // per stage: one past its last task
