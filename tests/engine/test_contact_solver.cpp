@@ -5,6 +5,7 @@
 
 #include "engine/collision/collision_detection.hpp"
 #include "engine/geometry/transform.hpp"
+#include "engine/solver/contact_batches.hpp"
 #include "engine/solver/position_passes.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
@@ -69,6 +70,32 @@ TEST_CASE("Warm-started with last step's impulses, a resting box needs a single 
   // Without the tolerance, the passes go on while anything at all changes.
   RestingBox cold;
   CHECK(gp::solve_velocities(cold.contacts, cold.inertia, 10, 0.0, cold.state) <= 3);
+}
+
+TEST_CASE("Prepared and warm-started in one pass, a resting box gets its masses and stops",
+          "[via:GD:impulse]") {
+  RestingBox box;
+  gp::ContactPointState* points = box.contacts.points(box.contacts[0]).data();
+  for (int k = 0; k < 2; ++k) {
+    points[k].normal_mass = points[k].tangent_mass = 0.0;
+    points[k].normal_impulse = 0.5 * kGravity * kStep;
+  }
+  gp::ContactBatches batches;
+  batches.build(box.contacts, box.inertia, box.state.position, {});
+  gp::MotionState before = box.state;
+  before.velocity[1] = gp::Vec2::Zero();
+  gp::prepare_and_warm_start(batches, box.contacts,
+                             {box.shapes, box.inertia, before, kStep, gp::Settings{}}, box.state);
+  // Each corner's arm crosses the normal at ±0.5 m: 1 / (1/m + 0.5² / I) = 1 / 2.5 kg, and the
+  // tangent at 0.5 m.
+  for (int k = 0; k < 2; ++k) {
+    CHECK(points[k].normal_mass == Approx(0.4).epsilon(1e-14));
+    CHECK(points[k].tangent_mass == Approx(0.4).epsilon(1e-14));
+  }
+  // The two half weights carried over cancel the step's gravity, g h, of the 1 kg box.
+  CHECK(std::abs(box.state.velocity[1].y()) < 1e-15);
+  CHECK(std::abs(box.state.angular_velocity[1]) < 1e-15);
+  CHECK(before.velocity[1].y() == 0.0);
 }
 
 TEST_CASE("A rotation turned slightly agrees with one built from the new angle",

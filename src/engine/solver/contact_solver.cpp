@@ -17,8 +17,8 @@ void ContactSolver::prepare(StepContext& c) {
   batches_.build(c.contacts, c.inertia, c.start.position,
                  {static_cast<std::size_t>(c.settings.island_part_contacts),
                   static_cast<std::size_t>(c.settings.coloured_island_contacts)});
-  prepare_contacts(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings});
-  warm_start(batches_, c.contacts, c.inertia, c.state);
+  prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
+                         c.state);
 }
 
 void ContactSolver::solve_small_islands(StepContext& c) {

@@ -267,71 +267,68 @@ void fill_normal_block(const BodyInertia& inertia, const Contact& c, const Conta
 
 namespace {
 
-template <typename Order>
-void prepare_in(const Order& order, ContactSet& contacts, const ContactPreparation& in) {
-  const BodyShapes& shapes = in.shapes;
-  const BodyInertia& inertia = in.inertia;
-  const Settings& settings = in.settings;
-  // A point apart by less than the passes' velocity tolerance closes over the step counts as
-  // touching (target 0): closing its gap or not changes no velocity by more than they are asked
-  // to resolve, while in a settled pile, whose points lie 0.1 to 0.2 µm apart, closing each by its
-  // own gap keeps the passes switching points between pushing and free at that very scale.
-  const double touching_gap = settings.velocity_tolerance * in.h;
-  order.run([&](std::uint32_t i) {
-    const Contact& c = contacts[i];
-    const double restitution = contact_restitution(shapes, c);
-    const Vec2 tangent = contact_tangent(c.normal);
-    const std::span<ContactPointState> points = contacts.points(c);
-    for (ContactPointState& p : points) {
-      const Vec2 arm_a = gp::arm_a(c, p);
-      const Vec2 arm_b = gp::arm_b(c, p);
-      p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
-      p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
-      const double approach = contact_normal_velocity(in.before, c, p);
-      p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap);
-      // A speculative point (still apart) bounces too if the solver ends up pushing on it:
-      // apply_restitution acts only where the normal impulse is positive.
-      p.bounce_velocity = approach < -settings.restitution_threshold ? restitution * approach : 0.0;
-    }
-    if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
-    return 0.0;
-  });
+// A point apart by less than the passes' velocity tolerance closes over the step counts as
+// touching (target 0): closing its gap or not changes no velocity by more than they are asked to
+// resolve, while in a settled pile, whose points lie 0.1 to 0.2 µm apart, closing each by its own
+// gap keeps the passes switching points between pushing and free at that very scale.
+double touching_gap(const ContactPreparation& in) {
+  return in.settings.velocity_tolerance * in.h;
 }
 
-template <typename Order>
-void warm_start_in(const Order& order, const ContactSet& contacts, const BodyInertia& inertia,
-                   MotionState& s) {
-  order.run([&](std::uint32_t i) {
-    const Contact& c = contacts[i];
-    PairMotion m(c, inertia, s);
-    for (const ContactPointState& p : contacts.points(c)) {
-      m.push_normal(c, p, p.normal_impulse);
-      m.push_tangent(contact_tangent(c.normal), p, p.tangent_impulse);
-    }
-    m.store(c, s);
-    return 0.0;
-  });
+void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in,
+                     double touching_gap) {
+  const BodyInertia& inertia = in.inertia;
+  const Contact& c = contacts[i];
+  const double restitution = contact_restitution(in.shapes, c);
+  const Vec2 tangent = contact_tangent(c.normal);
+  const std::span<ContactPointState> points = contacts.points(c);
+  for (ContactPointState& p : points) {
+    const Vec2 arm_a = gp::arm_a(c, p);
+    const Vec2 arm_b = gp::arm_b(c, p);
+    p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
+    p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
+    const double approach = contact_normal_velocity(in.before, c, p);
+    p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap);
+    // A speculative point (still apart) bounces too if the solver ends up pushing on it:
+    // apply_restitution acts only where the normal impulse is positive.
+    p.bounce_velocity =
+        approach < -in.settings.restitution_threshold ? restitution * approach : 0.0;
+  }
+  if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
+}
+
+void warm_start_contact(const ContactSet& contacts, std::uint32_t i, const BodyInertia& inertia,
+                        MotionState& s) {
+  const Contact& c = contacts[i];
+  PairMotion m(c, inertia, s);
+  for (const ContactPointState& p : contacts.points(c)) {
+    m.push_normal(c, p, p.normal_impulse);
+    m.push_tangent(contact_tangent(c.normal), p, p.tangent_impulse);
+  }
+  m.store(c, s);
 }
 
 }  // namespace
 
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
-  prepare_in(ContactsInOrder(contacts), contacts, {shapes, inertia, before, h, settings});
-}
-
-void prepare_contacts(const ContactBatches& batches, ContactSet& contacts,
-                      const ContactPreparation& preparation) {
-  prepare_in(batches, contacts, preparation);
+  const ContactPreparation in{shapes, inertia, before, h, settings};
+  const double gap = touching_gap(in);
+  for (std::uint32_t i = 0; i < contacts.size(); ++i) prepare_contact(contacts, i, in, gap);
 }
 
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
-  warm_start_in(ContactsInOrder(contacts), contacts, inertia, s);
+  for (std::uint32_t i = 0; i < contacts.size(); ++i) warm_start_contact(contacts, i, inertia, s);
 }
 
-void warm_start(const ContactBatches& batches, const ContactSet& contacts,
-                const BodyInertia& inertia, MotionState& s) {
-  warm_start_in(batches, contacts, inertia, s);
+void prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
+                            const ContactPreparation& preparation, MotionState& s) {
+  const double gap = touching_gap(preparation);
+  batches.run([&](std::uint32_t i) {
+    prepare_contact(contacts, i, preparation, gap);
+    warm_start_contact(contacts, i, preparation.inertia, s);
+    return 0.0;
+  });
 }
 
 namespace {
