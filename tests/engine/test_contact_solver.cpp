@@ -81,7 +81,7 @@ TEST_CASE("Prepared and warm-started in one pass, a resting box gets its masses 
     points[k].normal_impulse = 0.5 * kGravity * kStep;
   }
   gp::ContactBatches batches;
-  batches.build(box.contacts, box.inertia, box.state.position, {});
+  batches.build(box.contacts, {}, box.inertia, box.state.position, {});
   gp::MotionState before = box.state;
   before.velocity[1] = gp::Vec2::Zero();
   gp::prepare_and_warm_start(batches, box.contacts,

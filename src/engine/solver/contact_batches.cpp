@@ -19,12 +19,10 @@ constexpr std::size_t kColours = 64;
 
 }  // namespace
 
-void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inertia,
-                           std::span<const Vec2> positions, const IslandSplitting& splitting) {
-  if (join_as_before(contacts, inertia, splitting)) {
-    islands_.count_points(contacts, inertia);
-    return;
-  }
+void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart> last_kept,
+                           const BodyInertia& inertia, std::span<const Vec2> positions,
+                           const IslandSplitting& splitting) {
+  if (holds_for(contacts, last_kept, inertia, splitting)) return;
   islands_.find(contacts, inertia);
   order_.clear();
   task_end_.clear();
@@ -53,22 +51,23 @@ void ContactBatches::build(const ContactSet& contacts, const BodyInertia& inerti
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
 }
 
-bool ContactBatches::join_as_before(const ContactSet& contacts, const BodyInertia& inertia,
-                                    const IslandSplitting& splitting) {
+bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmStart> last_kept,
+                               const BodyInertia& inertia, const IslandSplitting& splitting) {
   const std::size_t bodies = inertia.inverse_mass.size();
-  const auto joined = [](const Contact& c) {
-    return std::uint64_t{c.body_a} << 32 | std::uint64_t{c.body_b};
-  };
-  bool same = joined_.size() == contacts.size() && movable_.size() == bodies &&
+  bool same = built_contacts_ == contacts.size() && last_kept.size() == contacts.point_count() &&
+              movable_.size() == bodies &&
               built_splitting_.parted_above == splitting.parted_above &&
               built_splitting_.coloured_above == splitting.coloured_above;
-  for (std::size_t i = 0; same && i < contacts.size(); ++i)
-    same = joined_[i] == joined(contacts[i]);
+  // Pairs are unique and the points kept in the contacts' order: each contact's points finding
+  // its own pair where they were kept makes the two lists of contacts the same.
+  for (std::size_t i = 0; same && i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    const std::uint64_t pair = WarmStart::pair_key({c.shape_a, c.shape_b});
+    for (int k = 0; k < c.count(); ++k) same = same && last_kept[c.first_point + k].pair() == pair;
+  }
   for (BodyId b = 0; same && b < bodies; ++b) same = (movable_[b] != 0) == movable(inertia, b);
   if (same) return true;
-  reserve_for(joined_, contacts.size());
-  joined_.resize(contacts.size());
-  for (std::size_t i = 0; i < contacts.size(); ++i) joined_[i] = joined(contacts[i]);
+  built_contacts_ = contacts.size();
   reserve_for(movable_, bodies);
   movable_.resize(bodies);
   for (BodyId b = 0; b < bodies; ++b) movable_[b] = movable(inertia, b) ? 1 : 0;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/solver/contact_islands.hpp"
+#include "engine/solver/warm_start.hpp"
 #include "engine/threads.hpp"
 
 namespace gp {
@@ -60,12 +61,14 @@ class ContactBatches {
   /// between two parts joins the smallest group of parts holding both. Second stage: per cut
   /// island, one task of its contacts between parts, group by group from the smallest up. Last
   /// stages: each colour of the coloured islands, one task per contact. No two tasks of a stage
-  /// share a body that the solver moves. Reuses its arrays' room. While the contacts join the
-  /// same bodies in the same order as at the last build, the bodies as movable and the splitting
-  /// the same (a pile at rest), the islands, parts and colours are kept, and only the islands'
-  /// points counted again.
-  void build(const ContactSet& contacts, const BodyInertia& inertia,
-             std::span<const Vec2> positions, const IslandSplitting& splitting);
+  /// share a body that the solver moves. Reuses its arrays' room. `last_kept` are the points of
+  /// the contacts of the last pass, as keep_impulses kept them: when `contacts` are those same
+  /// contacts (the same pairs of shapes, as many points each) as the last build's, the bodies as
+  /// movable and the splitting the same (a pile at rest), the islands, parts and colours of the
+  /// last build are kept.
+  void build(const ContactSet& contacts, std::span<const WarmStart> last_kept,
+             const BodyInertia& inertia, std::span<const Vec2> positions,
+             const IslandSplitting& splitting);
 
   /// The islands of the contacts build was given.
   const ContactIslands& islands() const { return islands_; }
@@ -107,10 +110,10 @@ class ContactBatches {
     int depth;
     std::size_t first_group;
   };
-  /// Whether `contacts` join the bodies as the last build's did (see build); if not, remembers
-  /// how they do.
-  bool join_as_before(const ContactSet& contacts, const BodyInertia& inertia,
-                      const IslandSplitting& splitting);
+  /// Whether the last build holds for `contacts` (see build); if not, remembers what the next
+  /// call compares with.
+  bool holds_for(const ContactSet& contacts, std::span<const WarmStart> last_kept,
+                 const BodyInertia& inertia, const IslandSplitting& splitting);
   void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
             std::size_t parted_above);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
@@ -118,8 +121,10 @@ class ContactBatches {
                     int depth, std::uint32_t code);
 
   ContactIslands islands_;
-  std::vector<std::uint64_t> joined_;  // per contact of the last build: body_a << 32 | body_b
-  std::vector<char> movable_;          // per body at the last build: whether it was movable
+  // Of the last build: its contacts, and per body whether it was movable (which sleeping and
+  // removal change); the contacts' pairs are those of the points kept after it.
+  std::size_t built_contacts_ = 0;
+  std::vector<char> movable_;
   IslandSplitting built_splitting_;
   std::vector<std::uint32_t> order_;      // contact indices, task after task
   std::vector<std::uint32_t> task_end_;   // per task: one past its last entry in order_

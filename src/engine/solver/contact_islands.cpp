@@ -7,7 +7,7 @@ namespace gp {
 
 namespace {
 
-BodyId find_root(std::vector<BodyId>& parent, BodyId body) {
+BodyId root_of(std::vector<BodyId>& parent, BodyId body) {
   while (parent[body] != body) {
     parent[body] = parent[parent[body]];  // path halving keeps the trees flat
     body = parent[body];
@@ -23,19 +23,26 @@ void ContactIslands::find(const ContactSet& contacts, const BodyInertia& inertia
   std::iota(parent.begin(), parent.end(), BodyId{0});
   for (const Contact& c : contacts) {
     if (movable(inertia, c.body_a) && movable(inertia, c.body_b)) {
-      const BodyId a = find_root(parent, c.body_a);
-      const BodyId b = find_root(parent, c.body_b);
+      const BodyId a = root_of(parent, c.body_a);
+      const BodyId b = root_of(parent, c.body_b);
       parent[std::max(a, b)] = std::min(a, b);
     }
   }
   // Every body pointing at its root: an island is then one look-up away. A root is the
   // island's lowest body id, so roots come before their bodies in this loop.
   for (BodyId b = 0; b < bodies; ++b) parent[b] = parent[parent[b]];
-  count_points(contacts, inertia);
+  const auto root = [&](const Contact& c) {
+    return parent[movable(inertia, c.body_a) ? c.body_a : c.body_b];
+  };
+  points.assign(bodies, 0);
   island_start.assign(bodies, 0);
   island_end.assign(bodies, 0);
   std::vector<std::uint32_t>& counts = island_end;
-  for (const Contact& c : contacts) ++counts[root_of(c, inertia)];
+  for (const Contact& c : contacts) {
+    const BodyId r = root(c);
+    points[r] += static_cast<std::uint32_t>(c.count());
+    ++counts[r];
+  }
   std::uint32_t next = 0;
   for (std::size_t r = 0; r < bodies; ++r) {
     island_start[r] = next;
@@ -43,15 +50,7 @@ void ContactIslands::find(const ContactSet& contacts, const BodyInertia& inertia
     counts[r] = island_start[r];
   }
   order.resize(contacts.size());
-  for (std::uint32_t i = 0; i < contacts.size(); ++i) {
-    order[island_end[root_of(contacts[i], inertia)]++] = i;
-  }
-}
-
-void ContactIslands::count_points(const ContactSet& contacts, const BodyInertia& inertia) {
-  points.assign(parent.size(), 0);
-  for (const Contact& c : contacts)
-    points[root_of(c, inertia)] += static_cast<std::uint32_t>(c.count());
+  for (std::uint32_t i = 0; i < contacts.size(); ++i) order[island_end[root(contacts[i])]++] = i;
 }
 
 }  // namespace gp

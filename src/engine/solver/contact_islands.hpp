@@ -28,13 +28,6 @@ struct ContactIslands {
 
   /// Groups `contacts` by island, reusing the arrays' room.
   void find(const ContactSet& contacts, const BodyInertia& inertia);
-  /// Counts each island's points again, for `contacts` that join the same bodies as those `find`
-  /// was given, but whose number of points may have changed.
-  void count_points(const ContactSet& contacts, const BodyInertia& inertia);
-  /// The root of the island of contact `c` (after find).
-  BodyId root_of(const Contact& c, const BodyInertia& inertia) const {
-    return parent[movable(inertia, c.body_a) ? c.body_a : c.body_b];
-  }
 };
 
 }  // namespace gp

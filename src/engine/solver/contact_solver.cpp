@@ -14,7 +14,7 @@ PositionLimits position_limits(const Settings& s) {
 }  // namespace
 
 void ContactSolver::prepare(StepContext& c) {
-  batches_.build(c.contacts, c.inertia, c.start.position,
+  batches_.build(c.contacts, c.warm_starts, c.inertia, c.start.position,
                  {static_cast<std::size_t>(c.settings.island_part_contacts),
                   static_cast<std::size_t>(c.settings.coloured_island_contacts)});
   prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
