@@ -338,3 +338,20 @@ TEST_CASE("A non-finite box, from a state about to be reported non-finite, is pa
   // Bottoms 3.4e308 apart: their span overflows a double.
   CHECK(pairs_found(broadphase, proxies).empty());
 }
+
+TEST_CASE("Sweep and prune released finds the pairs of all-pairs testing again",
+          "[FR:Determine-Collisions]") {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> position(0.0, 30.0);
+  std::vector<BroadphaseProxy> proxies;
+  for (int i = 0; i < 300; ++i) {
+    proxies.push_back(box_proxy({position(random), position(random)}, {1.0, 1.5}, i % 7 == 0));
+  }
+  gp::SweepAndPrune broadphase(0.1);
+  REQUIRE(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.1));
+  broadphase.release();
+  for (BroadphaseProxy& p : proxies) p.bounds = p.bounds.fattened(0.3);
+  CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.1));
+  // Placed and sorted from scratch, as nothing was kept.
+  CHECK(broadphase.entries_resorted() >= proxies.size());
+}

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/capacity.hpp"
+#include "engine/collision/enlarged_boxes.hpp"
 #include "engine/collision/swept_boxes.hpp"
 #include "engine/threads.hpp"
 
@@ -328,7 +329,19 @@ void SweepAndPrune::forget() {
   band_height_ = 0.0;
 }
 
+void SweepAndPrune::release() {
+  forget();
+  // Moved-from temporaries take the room with them.
+  entries_ = std::vector<Entry>();
+  bands_ = std::vector<BandRange>();
+  added_ = std::vector<Entry>();
+  thread_added_.clear();
+  block_pairs_ = std::vector<std::size_t>();
+  block_tested_ = std::vector<std::size_t>();
+}
+
 template void SweepAndPrune::find_pairs(const ProxyBoxes&, std::vector<ShapePair>&);
+template void SweepAndPrune::find_pairs(const EnlargedBoxes&, std::vector<ShapePair>&);
 template void SweepAndPrune::find_pairs(const SweptBoxes&, std::vector<ShapePair>&);
 
 }  // namespace gp

@@ -72,6 +72,10 @@ class SweepAndPrune {
     find_pairs(ProxyBoxes{proxies}, pairs);
   }
 
+  /// Drops the entries and the bands and frees their room, for a caller that will not call for a
+  /// while: the next call places and sorts them from scratch.
+  void release();
+
   /// How many pairs of band entries the last call compared, those found plus those rejected:
   /// the measure of its cost.
   std::size_t candidates_tested() const { return candidates_tested_; }

@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "engine/collision/narrowphase.hpp"
-#include "engine/collision/swept_boxes.hpp"
 #include "engine/threads.hpp"
 
 #include <tbb/blocked_range.h>
@@ -15,29 +14,12 @@
 
 namespace gp {
 
-const std::vector<ShapePair>& CollisionDetection::candidate_pairs(const BodyShapes& shapes,
-                                                                  const std::vector<char>& dynamic,
-                                                                  const WorldShapes& start,
-                                                                  const WorldShapes& end) {
-  // The shapes' bodies side by side: the broadphase and the pairs below look them up at random,
-  // and a whole shape record per look-up costs a cache miss each in a large scene.
-  body_of_.resize(shapes.size());
-  for (std::uint32_t i = 0; i < shapes.size(); ++i) body_of_[i] = shapes[i].body;
-  broadphase_.find_pairs(SweptBoxes(start, end, body_of_, dynamic), pairs_);
-  // Two parts of one body never collide.
-  std::erase_if(pairs_,
-                [this](const ShapePair& p) { return body_of_[p.first] == body_of_[p.second]; });
-  // Sorted pairs make the order of the solver, and so the result, independent of the
-  // broadphase's internal order.
-  pair_order_.sort(pairs_, static_cast<std::uint32_t>(shapes.size()));
-  return pairs_;
-}
-
 std::span<const ShapePair> CollisionDetection::drop_pairs(std::span<const ShapePair> dropped) {
-  std::erase_if(pairs_, [dropped](const ShapePair& p) {
+  std::vector<ShapePair>& pairs = candidates_.pairs();
+  std::erase_if(pairs, [dropped](const ShapePair& p) {
     return std::find(dropped.begin(), dropped.end(), p) != dropped.end();
   });
-  return pairs_;
+  return pairs;
 }
 
 namespace {

@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "engine/collision/body_shapes.hpp"
-#include "engine/collision/broadphase.hpp"
-#include "engine/collision/pair_order.hpp"
+#include "engine/collision/candidate_pairs.hpp"
 #include "engine/solver/contact_set.hpp"
 #include "engine/solver/warm_start.hpp"
 
@@ -24,13 +23,15 @@ Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const C
 class CollisionDetection {
  public:
   /// `margin` [m]: shapes this far apart already get (speculative) contact points.
-  explicit CollisionDetection(double margin) : margin_(margin), broadphase_(margin) {}
+  explicit CollisionDetection(double margin) : margin_(margin), candidates_(margin) {}
 
   /// The pairs of shapes of different bodies, at least one of them dynamic, whose boxes overlap
-  /// when each is grown to cover both its `start` and its `end` placement.
+  /// when each is grown to cover both its `start` and its `end` placement (CandidatePairs).
   const std::vector<ShapePair>& candidate_pairs(const BodyShapes& shapes,
                                                 const std::vector<char>& dynamic,
-                                                const WorldShapes& start, const WorldShapes& end);
+                                                const WorldShapes& start, const WorldShapes& end) {
+    return candidates_.find(shapes, dynamic, start, end);
+  }
 
   /// Removes the pairs in `dropped` from the last candidate pairs, in place; returns those left.
   std::span<const ShapePair> drop_pairs(std::span<const ShapePair> dropped);
@@ -44,10 +45,7 @@ class CollisionDetection {
 
  private:
   double margin_;
-  SweepAndPrune broadphase_;
-  PairOrder pair_order_;
-  std::vector<BodyId> body_of_;             // per shape
-  std::vector<ShapePair> pairs_;            // the broadphase's, filtered and sorted in place
+  CandidatePairs candidates_;
   std::vector<ContactManifold> manifolds_;  // per pair of a block of find_contacts
   std::vector<std::uint8_t> counts_;        // per pair of the block: its number of points
   std::vector<ContactSlot> slots_;          // per pair of the block: where its contact goes
