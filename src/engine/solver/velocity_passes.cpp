@@ -275,8 +275,7 @@ double touching_gap(const ContactPreparation& in) {
   return in.settings.velocity_tolerance * in.h;
 }
 
-void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in,
-                     double touching_gap) {
+void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
   const BodyInertia& inertia = in.inertia;
   const Contact& c = contacts[i];
   const double restitution = contact_restitution(in.shapes, c);
@@ -288,7 +287,7 @@ void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPrepara
     p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
     p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
     const double approach = contact_normal_velocity(in.before, c, p);
-    p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap);
+    p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in));
     // A speculative point (still apart) bounces too if the solver ends up pushing on it:
     // apply_restitution acts only where the normal impulse is positive.
     p.bounce_velocity =
@@ -313,8 +312,7 @@ void warm_start_contact(const ContactSet& contacts, std::uint32_t i, const BodyI
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
   const ContactPreparation in{shapes, inertia, before, h, settings};
-  const double gap = touching_gap(in);
-  for (std::uint32_t i = 0; i < contacts.size(); ++i) prepare_contact(contacts, i, in, gap);
+  for (std::uint32_t i = 0; i < contacts.size(); ++i) prepare_contact(contacts, i, in);
 }
 
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
@@ -323,9 +321,8 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
 
 void prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
                             const ContactPreparation& preparation, MotionState& s) {
-  const double gap = touching_gap(preparation);
   batches.run([&](std::uint32_t i) {
-    prepare_contact(contacts, i, preparation, gap);
+    prepare_contact(contacts, i, preparation);
     warm_start_contact(contacts, i, preparation.inertia, s);
     return 0.0;
   });
