@@ -83,6 +83,28 @@ TEST_CASE("Orientation stays within 0 ≤ ϕ < 2π after any angular displacemen
              WithinAbs(std::fmod(pi / 2 + 1000.0, 2 * pi), 1e-12));
 }
 
+TEST_CASE("Orientation near 0 and 2π: fmod's reduction, to the bit", "[DD:angDisp]") {
+  // The reference: fmod's remainder, moved into [0, 2π), as the SRS's range asks.
+  const auto reduced = [](double phi) {
+    const double r = std::fmod(phi, 2 * pi);
+    const double in_range = r < 0.0 ? r + 2 * pi : r;
+    return in_range >= 2 * pi ? 0.0 : in_range;
+  };
+  // Sums just below 0, just below 2π, at and just past 2π and 4π, and a few turns away.
+  for (const double phi :
+       {-1e-300, -1e-18, -1e-9, -0.3, -(2 * pi) + 1e-12, -(2 * pi), -3 * pi, 2 * pi,
+        std::nextafter(2 * pi, 10.0), 2 * pi + 1e-9, 3 * pi, std::nextafter(4 * pi, 0.0), 4 * pi,
+        std::nextafter(4 * pi, 20.0), 9 * pi, -9 * pi}) {
+    INFO("ϕ₀ + θ = " << phi);
+    const double expected = reduced(phi);
+    const double got = gp::dd::rotated_orientation(0.0, phi);
+    CHECK(std::signbit(got) == std::signbit(expected));
+    CHECK(got == expected);
+    CHECK(got >= 0.0);
+    CHECK(got < 2 * pi);
+  }
+}
+
 TEST_CASE("Constant torque: stepping reproduces θ = ω₀t + ½αt²",
           "[DD:angDisp][DD:angVel][DD:angAccel]") {
   const double alpha = 200.0 / 74.5, omega0 = 2.1, h = 1.0 / 60.0;
