@@ -117,6 +117,9 @@ struct IslandSurvey {
 IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
                     const IslandBodies& bodies, const MotionState& s,
                     const DirectSolveLimits& limits) {
+  // The masses are compared only where an uneven island may be solved: a large resting pile's
+  // survey runs at every step.
+  const bool weigh = islands.points[root] <= limits.uneven_points;
   struct Found {
     double lightest = 0.0;  // as inverse masses [1/kg]
     double heaviest = std::numeric_limits<double>::infinity();
@@ -131,7 +134,7 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
       for (const BodyId b : {c.body_a, c.body_b}) {
         if (!movable(bodies.inertia, b)) continue;
         const double inverse_mass = bodies.inertia.inverse_mass[b];
-        if (inverse_mass > 0.0) {
+        if (weigh && inverse_mass > 0.0) {
           found.lightest = std::max(found.lightest, inverse_mass);
           found.heaviest = std::min(found.heaviest, inverse_mass);
         }

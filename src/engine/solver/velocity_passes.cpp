@@ -24,13 +24,6 @@ double effective_mass(const BodyInertia& m, const Contact& c, const Vec2& arm_a,
                                m.inverse_moment[c.body_b], arm_a, arm_b);
 }
 
-// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m],
-// from the bodies' relative velocity v_A − v_B (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
-double velocity_along(const Vec2& relative_velocity, double angular_velocity_a,
-                      double angular_velocity_b, const Vec2& d, double arm_a, double arm_b) {
-  return relative_velocity.dot(d) + angular_velocity_a * arm_a - angular_velocity_b * arm_b;
-}
-
 // The velocities and inverse inertias of a contact's two bodies, copied out of the state arrays
 // while its points are solved: the inner loop then reads two cache lines rather than eight
 // arrays.
@@ -104,11 +97,6 @@ double normal_coupling(const Contact& ci, const ContactPointState& pi, const Con
          shared(ci.body_a, pi.normal_arm_a, cj.body_b, pj.normal_arm_b) -
          shared(ci.body_b, pi.normal_arm_b, cj.body_a, pj.normal_arm_a) +
          shared(ci.body_b, pi.normal_arm_b, cj.body_b, pj.normal_arm_b);
-}
-
-double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p) {
-  return velocity_along(s.velocity[c.body_a] - s.velocity[c.body_b], s.angular_velocity[c.body_a],
-                        s.angular_velocity[c.body_b], c.normal, p.normal_arm_a, p.normal_arm_b);
 }
 
 void apply_contact_impulse(const Contact& c, const ContactPointState& p, double normal,
@@ -278,7 +266,6 @@ double touching_gap(const ContactPreparation& in) {
 void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
   const BodyInertia& inertia = in.inertia;
   const Contact& c = contacts[i];
-  const double restitution = contact_restitution(in.shapes, c);
   const Vec2 tangent = contact_tangent(c.normal);
   const std::span<ContactPointState> points = contacts.points(c);
   for (ContactPointState& p : points) {
@@ -289,9 +276,11 @@ void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPrepara
     const double approach = contact_normal_velocity(in.before, c, p);
     p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in));
     // A speculative point (still apart) bounces too if the solver ends up pushing on it:
-    // apply_restitution acts only where the normal impulse is positive.
-    p.bounce_velocity =
-        approach < -in.settings.restitution_threshold ? restitution * approach : 0.0;
+    // apply_restitution acts only where the normal impulse is positive. The shapes' restitution
+    // is looked up only then: a resting pile's points never approach that fast.
+    p.bounce_velocity = approach < -in.settings.restitution_threshold
+                            ? contact_restitution(in.shapes, c) * approach
+                            : 0.0;
   }
   if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
 }

@@ -32,9 +32,21 @@ inline double body_coupling(double inverse_mass, double inverse_moment, double d
 double normal_coupling(const Contact& ci, const ContactPointState& pi, const Contact& cj,
                        const ContactPointState& pj, const BodyInertia& m);
 
+/// v_rel·d at a point whose arms crossed with the unit direction d are `arm_a` and `arm_b` [m],
+/// from the bodies' relative velocity v_A − v_B (DD:chaslesThm, DD:reVeInColl, along d) [m/s].
+inline double velocity_along(const Vec2& relative_velocity, double angular_velocity_a,
+                             double angular_velocity_b, const Vec2& d, double arm_a, double arm_b) {
+  return relative_velocity.dot(d) + angular_velocity_a * arm_a - angular_velocity_b * arm_b;
+}
+
 /// v_rel·n at point `p` of `c` in state `s` [m/s]: the normal component of the velocity of A's
-/// material point relative to B's (DD:chaslesThm, DD:reVeInColl).
-double contact_normal_velocity(const MotionState& s, const Contact& c, const ContactPointState& p);
+/// material point relative to B's (DD:chaslesThm, DD:reVeInColl). Inline: a resting pile's survey
+/// reads it for every point at every step.
+inline double contact_normal_velocity(const MotionState& s, const Contact& c,
+                                      const ContactPointState& p) {
+  return velocity_along(s.velocity[c.body_a] - s.velocity[c.body_b], s.angular_velocity[c.body_a],
+                        s.angular_velocity[c.body_b], c.normal, p.normal_arm_a, p.normal_arm_b);
+}
 
 /// Applies the impulse `normal` n + `tangent` t [N·s] at point `p` to A and the reaction to B
 /// (DD:impulseV, DD:torque, TM:NewtonThirdLawMot), with the point's arms.
