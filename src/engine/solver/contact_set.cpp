@@ -32,7 +32,7 @@ ContactSlot ContactSet::take(std::uint8_t count) {
   return slot;
 }
 
-void ContactSet::make_room() {
+void ContactSet::grow() {
   room_for(contacts_, size_);
   room_for(points_, point_count_);
   room_for(blocks_, block_count_);

@@ -86,7 +86,15 @@ class ContactSet {
 
  private:
   ContactSlot take(std::uint8_t count);
-  void make_room();
+  /// Room for the contacts, points and blocks taken. Inline, with its growth out of line: it is
+  /// asked for at every contact appended, and the arrays seldom grow.
+  void make_room() {
+    if (contacts_.size() < size_ || points_.size() < point_count_ ||
+        blocks_.size() < block_count_) {
+      grow();
+    }
+  }
+  void grow();
 
   // Each array's first size_, point_count_ and block_count_ entries are in use; the rest is room.
   std::vector<Contact> contacts_;
