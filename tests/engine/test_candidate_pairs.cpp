@@ -155,3 +155,14 @@ TEST_CASE("An enlarged box of floats holds the box of doubles it was made from")
   CHECK_FALSE(gp::enlarged_box({{0.0, 0.0}, {1e39, 1.0}}).has_value());
   CHECK_FALSE(gp::enlarged_box({{std::nan(""), 0.0}, {1.0, 1.0}}).has_value());
 }
+
+TEST_CASE("A box beyond a float's range leaves a pile's pairs to the broadphase") {
+  Pile pile(4, 3);
+  // 1e39 m: a double, but no float; the pile's other boxes stay at rest.
+  pile.position[5] = {1e39, 0.5};
+  gp::CandidatePairs candidates(kMargin);
+  for (int call = 0; call < 10; ++call) {
+    REQUIRE(pile.find(candidates) == pile.all_pairs());
+    CHECK_FALSE(candidates.kept_pairs_used());
+  }
+}
