@@ -114,12 +114,19 @@ struct IslandSurvey {
   bool held;     // at rest: no point closing faster than DirectSolveLimits::unheld_speed now
 };
 
+// Whether the island of `root` is small enough for its uneven masses to let it in
+// (Reason::kUneven).
+bool may_be_uneven(const ContactIslands& islands, std::size_t root,
+                   const DirectSolveLimits& limits) {
+  return islands.points[root] <= limits.uneven_points;
+}
+
 IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
                     const IslandBodies& bodies, const MotionState& s,
                     const DirectSolveLimits& limits) {
   // The masses are compared only where an uneven island may be solved: a large resting pile's
   // survey runs at every step.
-  const bool weigh = islands.points[root] <= limits.uneven_points;
+  const bool weigh = may_be_uneven(islands, root, limits);
   struct Found {
     double lightest = 0.0;  // as inverse masses [1/kg]
     double heaviest = std::numeric_limits<double>::infinity();
@@ -188,11 +195,11 @@ Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands
   const std::size_t points = islands.points[root];
   if (points == 0) return Reason::kNone;
   if (points <= limits.points) return Reason::kSmall;
-  const bool may_be_uneven = points <= limits.uneven_points;
+  const bool uneven_allowed = may_be_uneven(islands, root, limits);
   const bool may_rest = points <= limits.resting_points;
-  if (!may_be_uneven && !may_rest) return Reason::kNone;
+  if (!uneven_allowed && !may_rest) return Reason::kNone;
   const IslandSurvey found = survey(contacts, islands, root, bodies, s, limits);
-  if (may_be_uneven && found.uneven) return Reason::kUneven;
+  if (uneven_allowed && found.uneven) return Reason::kUneven;
   if (may_rest && found.at_rest && !found.held) return Reason::kResting;
   return Reason::kNone;
 }

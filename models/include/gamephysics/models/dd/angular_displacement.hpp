@@ -20,15 +20,14 @@ inline Angle rotated_orientation(models::In<Angle> orientation,
   constexpr double two_pi = 2.0 * std::numbers::pi;
   Angle phi = orientation + angular_displacement;
   if (phi >= 0.0 && phi < two_pi) return phi;  // the common case, without a division
-  // Just past either end (a body at rest near ϕ = 0 turns across it at every step), one turn
-  // added or taken away is what fmod would give, to the bit: below 0, fmod leaves ϕ as it is;
-  // between 2π and 4π, ϕ − 2π is exact (Sterbenz).
-  if (phi > -two_pi && phi < 0.0) {
-    phi += two_pi;
-    return phi >= two_pi ? models::zero<Angle>() : phi;
+  // Within a turn of the range (a body at rest near ϕ = 0 turns across it at every step) fmod is
+  // not needed: between 2π and 4π, ϕ − 2π is its result, exact (Sterbenz); below 0, it would
+  // leave ϕ as it is.
+  if (phi >= two_pi && phi < 2.0 * two_pi) {
+    phi -= two_pi;
+  } else if (phi <= -two_pi || phi >= two_pi) {
+    phi = std::fmod(phi, two_pi);
   }
-  if (phi >= two_pi && phi < 2.0 * two_pi) return phi - two_pi;
-  phi = std::fmod(phi, two_pi);
   if (phi < 0.0) phi += two_pi;
   // fmod of a tiny negative number plus 2π rounds to 2π itself, which is outside the range.
   return phi >= two_pi ? models::zero<Angle>() : phi;
