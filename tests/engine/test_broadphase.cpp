@@ -20,22 +20,45 @@ using gp::Vec2;
 
 namespace {
 
+/// Whether the broadphase should report proxies i < j: not both static, and their boxes, each
+/// fattened by half the margin, overlap.
+bool should_pair(const std::vector<BroadphaseProxy>& proxies, std::size_t i, std::size_t j,
+                 double margin) {
+  if (proxies[i].is_static && proxies[j].is_static) return false;
+  return proxies[i]
+      .bounds.fattened(0.5 * margin)
+      .overlaps(proxies[j].bounds.fattened(0.5 * margin));
+}
+
 /// Every pair the broadphase should report, by testing all N² / 2 pairs.
 std::vector<ShapePair> all_overlapping_pairs(const std::vector<BroadphaseProxy>& proxies,
                                              double margin) {
   std::vector<ShapePair> pairs;
   for (std::size_t i = 0; i < proxies.size(); ++i) {
     for (std::size_t j = i + 1; j < proxies.size(); ++j) {
-      if (proxies[i].is_static && proxies[j].is_static) continue;
-      if (proxies[i]
-              .bounds.fattened(0.5 * margin)
-              .overlaps(proxies[j].bounds.fattened(0.5 * margin))) {
+      if (should_pair(proxies, i, j, margin)) {
         pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
       }
     }
   }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
+}
+
+/// `pairs`, all-pairs testing's pairs before proxy `moved` moved, made all-pairs testing's pairs
+/// after: its pairs dropped, then each of the N − 1 pairs with it tested again.
+void retest_pairs_of(std::vector<ShapePair>& pairs, const std::vector<BroadphaseProxy>& proxies,
+                     std::size_t moved, double margin) {
+  std::erase_if(pairs,
+                [moved](const ShapePair& p) { return p.first == moved || p.second == moved; });
+  for (std::size_t other = 0; other < proxies.size(); ++other) {
+    const std::size_t i = std::min(moved, other);
+    const std::size_t j = std::max(moved, other);
+    if (i != j && should_pair(proxies, i, j, margin)) {
+      pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
 }
 
 std::vector<ShapePair> sorted(std::vector<ShapePair> pairs) {
@@ -222,16 +245,22 @@ TEST_CASE("A box sinking a millimetre at every call leaves the bands where they 
                                        });
   gp::SweepAndPrune broadphase(0.0);
   pairs_found(broadphase, proxies);
+  // All-pairs testing's pairs, kept up to date by testing the moving box's N − 1 pairs at each
+  // call: all N² / 2 pairs at each of 100 calls took 30 s in the coverage and sanitizer builds.
+  std::vector<ShapePair> expected = all_overlapping_pairs(proxies, 0.0);
+  const auto moved = static_cast<std::size_t>(lowest - proxies.begin());
   int sorted_afresh = 0;
   for (int call = 0; call < 100; ++call) {
     lowest->bounds.min.y() -= 0.001;
     lowest->bounds.max.y() -= 0.001;
     const std::vector<ShapePair> found = sorted(pairs_found(broadphase, proxies));
+    retest_pairs_of(expected, proxies, moved, 0.0);
     INFO("call " << call);
-    REQUIRE(found == all_overlapping_pairs(proxies, 0.0));
+    REQUIRE(found == expected);
     if (broadphase.entries_resorted() >= proxies.size()) ++sorted_afresh;
   }
   CHECK(sorted_afresh == 0);
+  CHECK(expected == all_overlapping_pairs(proxies, 0.0));  // the reference kept up to date
 }
 
 TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Collisions]") {
