@@ -3,7 +3,7 @@
 # UndefinedBehaviorSanitizer, runs ctest, where any sanitizer report fails the run, prints the
 # gcovr summary and fails when line coverage of models/ plus src/ is under 90%; then builds the
 # libFuzzer target over the scene loader with clang in build-fuzz/ and fuzzes it with 100000
-# inputs (about 1 min), where a crash, a hang, a leak or a sanitizer report fails the run
+# inputs (1 to 2.5 min), where a crash, a hang, a leak or a sanitizer report fails the run
 # (verification/fuzz/README.md). One build for coverage and the sanitizers rather than one each:
 # each build of every target took 9 to 15 minutes on 2 cores.
 set -euo pipefail
@@ -26,7 +26,7 @@ cmake --build build-fuzz --target gamephysics_fuzz_scene -j2
 mkdir -p build-fuzz/corpus build-fuzz/artifacts
 # Seeds: the bad inputs of the tests, the crash inputs found so far and the shipped scenes; new
 # inputs go to build-fuzz/corpus, a failing one to build-fuzz/artifacts/. A fixed seed and number
-# of inputs (about 1 min here), so that clean checkouts fuzz much the same inputs (README); the time
+# of inputs (1 to 2.5 min here), so that clean checkouts fuzz much the same inputs (README); the time
 # limit only guards against a much slower machine. The log is long: its end is printed, with the
 # failure's report when there is one.
 if ! build-fuzz/bin/gamephysics_fuzz_scene -seed=1 -runs=100000 -max_total_time=300 -timeout=5 \
