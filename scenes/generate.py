@@ -15,13 +15,12 @@ Positions are on regular grids (no randomness), so the files are reproducible; r
 keeps the files small and their diffs readable. Standard library only.
 """
 
+import argparse
 import json
 import math
-import sys
 from pathlib import Path
 
-BENCH = len(sys.argv) > 2 and sys.argv[1] == "--bench"
-OUT = Path(sys.argv[-1]) if len(sys.argv) > 1 else Path(__file__).resolve().parent
+OUT = Path(__file__).resolve().parent  # where write_scene writes; main() may change it
 GRAVITY = [0, -9.81]
 DT = 1 / 60  # the game step
 
@@ -274,8 +273,21 @@ def tumbler():
     }, bodies)
 
 
-if __name__ == "__main__":
-    if BENCH:
+def main():
+    global OUT
+    parser = argparse.ArgumentParser(
+        description="Writes the generated scenes (see the top of this file).")
+    parser.add_argument("--bench", action="store_true",
+                        help="write Box2D 3's benchmark scenes instead of the shipped ones")
+    parser.add_argument("folder", nargs="?", type=Path,
+                        help="where to write them (default: this script's folder; "
+                             "required with --bench)")
+    args = parser.parse_args()
+    if args.bench and args.folder is None:
+        parser.error("--bench writes scenes too large to commit: give the folder to write into")
+    if args.folder is not None:
+        OUT = args.folder
+    if args.bench:
         large_pyramid()
         many_pyramids()
         tumbler()
@@ -284,3 +296,7 @@ if __name__ == "__main__":
         rain1000()
         rain100()
         contact_scenes()
+
+
+if __name__ == "__main__":
+    main()
