@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
                              gp::cli::kEveryOverride);
   simulate->add_option("--out", simulation.out, "Trajectory CSV to write");
   simulate->add_flag("--explain", simulation.explain,
-                     "Print the pipeline of a step (runs nothing unless --out is given)");
+                     "Print the pipeline of a step (runs nothing unless --out is given; with "
+                     "--out, then the wall time of each stage)");
   simulate->add_option("--threads", simulation.threads,
                        "Threads of a step (default: 1; 0: every core); the output is the same");
 

@@ -1,5 +1,7 @@
 // `gamephysics simulate`: a scene file in, its trajectory out (docs/scene-format.md).
+#include <chrono>
 #include <exception>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -36,6 +38,28 @@ void explain(const std::string& file, const Scene& scene, const Space& space) {
   if (!skipped.empty()) std::cout << "  not needed by this scene, skipped: " << skipped << "\n";
 }
 
+// After a run of `seconds` [s] with --explain: the wall time of each stage that ran, and what the
+// run spent outside them (setting up, writing the output).
+void report_stage_times(const Space& space, double seconds) {
+  std::cout << "time per stage, wall clock, of a run of " << std::fixed << std::setprecision(3)
+            << seconds << " s:\n";
+  double staged = 0.0;
+  for (const PipelineStage& stage : space.pipeline()) {
+    if (stage.runs == 0) continue;
+    staged += stage.seconds;
+    std::cout << "  " << std::left << std::setw(52) << stage.name << std::right << std::setw(9)
+              << stage.runs << " runs " << std::setw(9) << std::setprecision(3) << stage.seconds
+              << " s " << std::setw(9) << std::setprecision(1)
+              << 1e6 * stage.seconds / static_cast<double>(stage.runs) << " µs/run " << std::setw(5)
+              << 100.0 * stage.seconds / seconds << "%\n";
+  }
+  std::cout << "  " << std::left << std::setw(52) << "outside the stages (output, between steps)"
+            << std::right << std::setw(24) << std::setprecision(3) << seconds - staged << " s "
+            << std::setw(21) << std::setprecision(1) << 100.0 * (seconds - staged) / seconds
+            << "%\n";
+  std::cout << std::defaultfloat << std::setprecision(6);
+}
+
 }  // namespace
 
 int simulate(const SimulateOptions& options) {
@@ -59,9 +83,13 @@ int simulate(const SimulateOptions& options) {
     std::cerr << "error: " << file << ": " << e.what() << "\n";
     return kBadInput;
   }
+  double run_seconds = 0.0;
   try {
     TrajectoryCsv csv(out->stream());
+    space->time_stages(options.explain);
+    const auto start = std::chrono::steady_clock::now();
     run_scene(*space, scene, [&](double t) { csv.write(t, *space); });
+    run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out->commit();
   } catch (const std::exception& e) {  // NumericalError, or the output could not be written
     std::cerr << "error: " << file << ": " << e.what() << "\n";
@@ -69,6 +97,7 @@ int simulate(const SimulateOptions& options) {
   }
   std::cout << "wrote " << options.out->string() << ": " << space->body_count()
             << " bodies from t = 0 to " << scene.duration << " s\n";
+  if (options.explain) report_stage_times(*space, run_seconds);
   return 0;
 }
 

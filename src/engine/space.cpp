@@ -138,6 +138,10 @@ std::vector<PipelineStage> Space::pipeline() const {
   return impl_->runner.pipeline(impl_->context);
 }
 
+void Space::time_stages(bool on) {
+  impl_->runner.time_stages(on);
+}
+
 std::vector<ContactPointReport> Space::contact_points() const {
   const StepContext& c = impl_->context;
   std::vector<ContactPointReport> points;

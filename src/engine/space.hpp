@@ -77,9 +77,12 @@ class Space {
   BodyState state(BodyId body) const;
   const Settings& settings() const;
 
-  /// The stages of a step, in the order it runs them, each with its SRS ids and whether this
-  /// space needs it (the step skips those it does not).
+  /// The stages of a step, in the order it runs them, each with its SRS ids, whether this space
+  /// needs it (the step skips those it does not), how often it ran and, while timed, for how long.
   std::vector<PipelineStage> pipeline() const;
+  /// Whether the steps from now on time each of their stages (PipelineStage::seconds); off by
+  /// default.
+  void time_stages(bool on);
 
   /// The impacts resolved at their time of impact during the last step.
   const std::vector<Impact>& impacts() const;

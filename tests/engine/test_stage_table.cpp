@@ -1,6 +1,7 @@
 // The step runs the table of stages that --explain prints: on every shipped scene, the stages a
 // step executed are exactly those the explanation lists for the passes the step ran.
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -75,4 +76,34 @@ TEST_CASE("The bounce stages are needed only while a shape has a restitution abo
   CHECK(bounce_stages_needed(*pyramid) == 2);
   pyramid->remove_body(id);
   CHECK(bounce_stages_needed(*pyramid) == 0);
+}
+
+TEST_CASE("Timed stages add up to no more than the steps' wall time, and untimed ones to nothing",
+          "[FR:Simulation-Space]") {
+  const gp::Scene scene = gp::load_scene(GP_SOURCE_DIR "/scenes/pyramid20.json", {});
+  const auto space = gp::build_space(scene);
+  constexpr int kSteps = 30;
+  for (int k = 0; k < kSteps; ++k) space->step(scene.dt);
+  for (const gp::PipelineStage& s : space->pipeline()) CHECK(s.seconds == 0.0);
+
+  space->time_stages(true);
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < kSteps; ++k) space->step(scene.dt);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  double timed = 0.0;
+  for (const gp::PipelineStage& s : space->pipeline()) {
+    INFO(s.name);
+    // A pile's steps are local passes: each stage needed by one runs once a step.
+    if (s.needed && s.passes.find("local step") != std::string::npos) {
+      CHECK(s.runs == 2 * kSteps);
+      CHECK(s.seconds > 0.0);
+    } else {
+      CHECK(s.seconds == 0.0);
+    }
+    timed += s.seconds;
+  }
+  CHECK(timed <= wall);
+  // The clock reads between the stages cost well under a tenth of a pile's step.
+  CHECK(timed > 0.9 * wall);
 }

@@ -1,11 +1,14 @@
 #include "engine/step/step_runner.hpp"
 
+#include <chrono>
 #include <string>
 
 namespace gp {
 
 StepRunner::StepRunner(const Settings& settings)
-    : mechanisms_(settings), stage_runs_(step_stages().size(), 0) {}
+    : mechanisms_(settings),
+      stage_runs_(step_stages().size(), 0),
+      stage_seconds_(step_stages().size(), 0.0) {}
 
 void StepRunner::step(StepContext& c, double dt) {
   c.impacts.clear();
@@ -27,7 +30,14 @@ double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
     const Stage& stage = stages[i];
     if (!(stage.passes & pass) || !stage.needed(c)) continue;
     ++stage_runs_[i];
-    if (!stage.run(c, mechanisms_)) return 0.0;
+    const auto start =
+        timing_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    const bool finished = stage.run(c, mechanisms_);
+    if (timing_) {
+      stage_seconds_[i] +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    if (!finished) return 0.0;
   }
   c.time += c.h;
   c.previous_h = c.h;
@@ -37,7 +47,9 @@ double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
 std::vector<PipelineStage> StepRunner::pipeline(const StepContext& c) const {
   const bool local = runs_local_pass(c);
   std::vector<PipelineStage> out;
-  for (const Stage& stage : step_stages()) {
+  const std::span<const Stage> stages = step_stages();
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    const Stage& stage = stages[i];
     std::string passes;
     if (local && (stage.passes & kLocalPass)) passes = "local step";
     if (stage.passes & kSubStepPass) {
@@ -46,7 +58,8 @@ std::vector<PipelineStage> StepRunner::pipeline(const StepContext& c) const {
     }
     const bool needed = stage.needed(c) && !passes.empty();
     out.push_back({std::string(stage.name), std::string(stage.srs_ids),
-                   needed ? stage.describe(c) : std::string(), passes, needed});
+                   needed ? stage.describe(c) : std::string(), passes, needed, stage_runs_[i],
+                   stage_seconds_[i]});
   }
   return out;
 }
