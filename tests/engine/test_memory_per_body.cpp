@@ -27,8 +27,7 @@ gp::BodyDef box_of_walls() {
 // rain1000's layout: rows of 40 discs 1.5 m apart, every other row shifted by half of that.
 gp::BodyDef disc(int i) {
   gp::BodyDef def;
-  // The number with its letter put in front: for "d" + the number, GCC 12 warns, falsely, of a
-  // memcpy past any object's size (-Wstringop-overflow).
+  // The letter inserted, not "d" + …, which GCC 12 flags falsely (-Wstringop-overflow).
   def.name = std::to_string(i).insert(0, 1, 'd');
   const int row = i / 40;
   def.position = {-29.25 + 1.5 * (i % 40) + (row % 2 == 1 ? 0.75 : 0.0), 5.0 + 1.5 * row};
