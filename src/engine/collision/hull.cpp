@@ -45,8 +45,8 @@ EdgeSeparation max_separation_of(std::span<const Vec2, ReferenceCount> vertices,
 
 // max_separation_of for four edges against four vertices (a box against a box), two edges at a
 // time, one in each lane of a 128-bit register: each lane runs the scalar loop's operations in
-// its order, the vertices one after the other, so the separations are the same to the bit. Half
-// the instructions of the scalar loop (callgrind, pyramid20).
+// its order, the vertices one after the other, so the separations are the same to the bit. 122
+// instructions a call against the scalar loop's 159 (callgrind, pyramid20).
 EdgeSeparation max_separation_of_boxes(std::span<const Vec2, 4> vertices,
                                        std::span<const Vec2, 4> normals,
                                        std::span<const Vec2, 4> other) {

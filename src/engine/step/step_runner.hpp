@@ -24,10 +24,9 @@ class StepRunner {
 
   /// How many times each stage of step_stages() ran, and how many passes of each kind ran.
   std::span<const std::uint64_t> stage_runs() const { return stage_runs_; }
-  /// Whether the steps from now on time each stage (off by default: two clock reads a stage).
+  /// Whether the steps from now on time each stage (off by default: two clock reads a stage);
+  /// pipeline() gives each stage's time.
   void time_stages(bool on) { timing_ = on; }
-  /// s: the wall time each stage of step_stages() took while timed.
-  std::span<const double> stage_seconds() const { return stage_seconds_; }
   std::uint64_t local_passes() const { return local_passes_; }
   std::uint64_t sub_steps() const { return sub_steps_; }
 
