@@ -42,7 +42,7 @@ void Space::set_position(BodyId body, const Vec2& position) {
   c.state.position[body] = position;
   // Static shapes are placed once; placed again, with this one where it now is, on the next step.
   c.world_start.clear();
-  c.world_end.clear();
+  c.end_bounds.clear();
 }
 
 void Space::set_angle(BodyId body, double angle) {
@@ -52,7 +52,7 @@ void Space::set_angle(BodyId body, double angle) {
   wake_island(c, body);
   c.state.angle[body] = dd::rotated_orientation(angle, 0.0);
   c.world_start.clear();
-  c.world_end.clear();
+  c.end_bounds.clear();
 }
 
 void Space::set_velocity(BodyId body, const Vec2& velocity) {
@@ -150,7 +150,7 @@ void Space::remove_body(BodyId body) {
       c.warm_starts.clear();
     }
     c.world_start.clear();
-    c.world_end.clear();
+    c.end_bounds.clear();
   }
   std::erase_if(c.impacts,
                 [body](const Impact& i) { return i.body_a == body || i.body_b == body; });

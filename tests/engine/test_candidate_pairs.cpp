@@ -29,7 +29,7 @@ struct Pile {
   std::vector<Vec2> position;
   std::vector<double> angle;
   gp::WorldShapes start;
-  gp::WorldShapes end;
+  gp::WorldBounds end;
 
   Pile(int columns, int rows) {
     shapes.add(0, gp::Shape::segment({-1.0, 0.0}, {columns + 1.0, 0.0}), 0.0, 0.6, false);

@@ -7,7 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/collision/body_shapes.hpp"
 #include "engine/geometry/mass_properties.hpp"
+#include "engine/geometry/world_bounds.hpp"
 #include "engine/geometry/world_shape.hpp"
 #include "engine/geometry/world_shapes.hpp"
 
@@ -291,4 +293,32 @@ TEST_CASE("Shapes placed in one pool are placed as one by one, and keep their ro
   gp::WorldShapes small;
   small.lay_out(1, 1, 3);
   CHECK_THROWS_AS(small.place(0, gp::view_of(shapes[0].geometry()), frame), std::logic_error);
+}
+
+TEST_CASE("A shape's box placed alone is the box of the shape placed whole, bit for bit",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Shape> shapes{Shape::box(2.0, 1.0, {1.0, 0.0}), Shape::circle(0.5, {0.3, 0.1}),
+                                  Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05),
+                                  Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0.2, 1}})};
+  gp::BodyShapes records;
+  for (const Shape& shape : shapes) records.add(0, shape, 0.0, 0.5, true);
+  gp::WorldBounds boxes;
+  boxes.lay_out(shapes.size());
+  for (int k = 0; k < 200; ++k) {
+    const double angle = 0.0314159 * k - 3.0;
+    const gp::Transform frame({std::cos(0.7 * k) * 1e3, 1e-3 * k}, angle);
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      boxes.place(i, records[i].local, frame);
+      const gp::WorldShape whole = gp::to_world(shapes[i], frame);
+      CHECK(boxes.bounds(i).min == whole.bounds.min);
+      CHECK(boxes.bounds(i).max == whole.bounds.max);
+    }
+    // The 2 m × 1 m box about (1, 0) in closed form: its centre moved, half-extents |cos|·1 +
+    // |sin|·0.5 across and |sin|·1 + |cos|·0.5 up.
+    const Vec2 centre = frame.apply({1.0, 0.0});
+    const Vec2 half(std::abs(std::cos(angle)) + 0.5 * std::abs(std::sin(angle)),
+                    std::abs(std::sin(angle)) + 0.5 * std::abs(std::cos(angle)));
+    CHECK((boxes.bounds(0).min - (centre - half)).norm() < 1e-9);
+    CHECK((boxes.bounds(0).max - (centre + half)).norm() < 1e-9);
+  }
 }

@@ -11,6 +11,7 @@
 #include "engine/dynamics/force_model.hpp"
 #include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
+#include "engine/geometry/world_bounds.hpp"
 #include "engine/geometry/world_shapes.hpp"
 #include "engine/threads.hpp"
 #include "scene/body.hpp"
@@ -31,6 +32,11 @@ struct ShapeRecord {
   /// it is.
   bool centred_disc() const {
     return local.kind() == ShapeKind::kCircle && local.circle().center == Vec2::Zero();
+  }
+  /// Where this shape is when its body's centre of mass is at `position`, turned by `angle`: a
+  /// disc about the centre of mass is not turned, so that placing it needs no sine.
+  Transform frame(const Vec2& position, double angle) const {
+    return centred_disc() ? Transform(position) : Transform(position, angle);
   }
 };
 
@@ -58,18 +64,25 @@ class BodyShapes {
   /// down by as many, and `body` keeps an empty range.
   Range remove_body(BodyId body);
 
-  /// Places every moving shape by its body's centre of mass `position` and orientation `angle`,
-  /// indexed by body id (static shapes once, on the first call).
+  /// Places every moving shape, whole in WorldShapes or its box alone in WorldBounds, by its
+  /// body's centre of mass `position` and orientation `angle`, indexed by body id (static shapes
+  /// once, on the first call).
+  template <typename Placements>
   void place(std::span<const Vec2> position, std::span<const double> angle,
-             WorldShapes& world) const {
+             Placements& world) const {
     place([&](BodyId body) { return std::pair(position[body], angle[body]); }, world);
   }
   /// The same with the centre of mass and orientation of each body given by `pose(body)`, a
   /// std::pair<Vec2, double>, for poses computed as they are needed rather than stored.
-  template <typename Pose>
-  void place(const Pose& pose, WorldShapes& world) const;
+  template <typename Pose, typename Placements>
+  void place(const Pose& pose, Placements& world) const;
 
  private:
+  void lay_out(WorldShapes& world) const {
+    world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
+  }
+  void lay_out(WorldBounds& world) const { world.lay_out(records_.size()); }
+
   std::vector<ShapeRecord> records_;
   // Per polygon, its vertices then its normals: a block each, which stays where it is as shapes
   // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
@@ -79,16 +92,16 @@ class BodyShapes {
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 
-template <typename Pose>
-void BodyShapes::place(const Pose& pose, WorldShapes& world) const {
+template <typename Pose, typename Placements>
+void BodyShapes::place(const Pose& pose, Placements& world) const {
   const bool first = world.size() != records_.size();
-  if (first) world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
+  if (first) lay_out(world);
   const auto place_shapes = [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const ShapeRecord& r = records_[i];
       if (!r.moves && !first) continue;
       const auto [position, angle] = pose(r.body);
-      world.place(i, r.local, r.centred_disc() ? Transform(position) : Transform(position, angle));
+      world.place(i, r.local, r.frame(position, angle));
     }
   };
   // Once placed, each shape has its own room in `world`: the shapes are placed side by side.

@@ -37,7 +37,7 @@ bool holds(const Aabb& outer, const Aabb& inner) {
 const std::vector<ShapePair>& CandidatePairs::find(const BodyShapes& shapes,
                                                    const std::vector<char>& dynamic,
                                                    const WorldShapes& start,
-                                                   const WorldShapes& end) {
+                                                   const WorldBounds& end) {
   // The shapes' bodies side by side: the broadphase and the pairs below look them up at random,
   // and a whole shape record per look-up costs a cache miss each in a large scene.
   bool same_bodies = body_of_.size() == shapes.size();

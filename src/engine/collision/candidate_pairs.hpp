@@ -13,6 +13,7 @@
 #include "engine/collision/broadphase.hpp"
 #include "engine/collision/enlarged_boxes.hpp"
 #include "engine/collision/pair_order.hpp"
+#include "engine/geometry/world_bounds.hpp"
 #include "engine/geometry/world_shapes.hpp"
 
 namespace gp {
@@ -26,7 +27,7 @@ class CandidatePairs {
   /// when each is grown by margin / 2 after being made to cover both its `start` and its `end`
   /// placement; sorted by (first, second).
   const std::vector<ShapePair>& find(const BodyShapes& shapes, const std::vector<char>& dynamic,
-                                     const WorldShapes& start, const WorldShapes& end);
+                                     const WorldShapes& start, const WorldBounds& end);
   /// The pairs of the last find, which the caller may filter in place.
   std::vector<ShapePair>& pairs() { return pairs_; }
 

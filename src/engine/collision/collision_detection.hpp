@@ -29,7 +29,7 @@ class CollisionDetection {
   /// when each is grown to cover both its `start` and its `end` placement (CandidatePairs).
   const std::vector<ShapePair>& candidate_pairs(const BodyShapes& shapes,
                                                 const std::vector<char>& dynamic,
-                                                const WorldShapes& start, const WorldShapes& end) {
+                                                const WorldShapes& start, const WorldBounds& end) {
     return candidates_.find(shapes, dynamic, start, end);
   }
 

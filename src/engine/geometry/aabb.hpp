@@ -29,6 +29,9 @@ struct Aabb {
     return {min.cwiseMin(other.min), max.cwiseMax(other.max)};
   }
 
+  /// The smallest box holding this one and point `p`.
+  Aabb grown_to(const Vec2& p) const { return {min.cwiseMin(p), max.cwiseMax(p)}; }
+
   /// This box grown by `margin` (m) on every side.
   Aabb fattened(double margin) const {
     // Not a Vec2(margin, margin): built from two scalars, it went through the stack, and the

@@ -39,9 +39,15 @@ Aabb place_polygon(const PolygonView& polygon, const Transform& transform, std::
     normals[i] = transform.rotate(polygon.normals[i]);
   }
   Aabb bounds{vertices[0], vertices[0]};
-  for (std::size_t i = 1; i < count; ++i) {
-    bounds.min = bounds.min.cwiseMin(vertices[i]);
-    bounds.max = bounds.max.cwiseMax(vertices[i]);
+  for (std::size_t i = 1; i < count; ++i) bounds = bounds.grown_to(vertices[i]);
+  return bounds;
+}
+
+Aabb placed_bounds(const PolygonView& polygon, const Transform& transform) {
+  const Vec2 first = transform.apply(polygon.vertices[0]);
+  Aabb bounds{first, first};
+  for (std::size_t i = 1; i < polygon.vertices.size(); ++i) {
+    bounds = bounds.grown_to(transform.apply(polygon.vertices[i]));
   }
   return bounds;
 }

@@ -67,4 +67,8 @@ inline WorldShape to_world(const Shape& shape, const Transform& transform) {
 Aabb place_polygon(const PolygonView& polygon, const Transform& transform, std::span<Vec2> vertices,
                    std::span<Vec2> normals);
 
+/// The bounding box of `polygon` moved into the world by `transform`, without placing it: the
+/// same box as place_polygon's, bit for bit.
+Aabb placed_bounds(const PolygonView& polygon, const Transform& transform);
+
 }  // namespace gp

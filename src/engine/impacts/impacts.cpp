@@ -77,9 +77,7 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
   const double t0 = window.t0;
   const double h = window.h;
   const auto distance = [&](double tau) {
-    return signed_distance(
-        to_world(a.local, Transform(motion.position(a.body, tau), motion.angle(a.body, tau))),
-        to_world(b.local, Transform(motion.position(b.body, tau), motion.angle(b.body, tau))));
+    return signed_distance(motion.placed(a, tau), motion.placed(b, tau));
   };
   if (d1 <= 0.0) {
     // Bracketed: TOMS 748 converges superlinearly on the smooth distance of ballistic motion.
@@ -122,7 +120,8 @@ std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, cons
   const double d0 = signed_distance(a.at_t0, b.at_t0);
   if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
   if (d0 > out_of_reach) return std::nullopt;
-  const double d1 = signed_distance(a.at_h, b.at_h);
+  const double d1 =
+      signed_distance(motion.placed(a.shape, window.h), motion.placed(b.shape, window.h));
   if (d0 < filter.margin && d0 - d1 < filter.min_speed * (window.h - window.t0)) {
     return std::nullopt;
   }
@@ -132,16 +131,14 @@ std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, cons
 std::optional<double> ImpactSearch::earliest(const StepContext& c) {
   const BodyShapes& shapes = c.shapes;
   const WorldShapes& start = c.world_start;
-  const WorldShapes& end = c.world_end;
   const double h = c.h;
   const ImpactFilter filter = impact_filter(c.settings);
   touching_.clear();
   std::optional<double> best;
   const double same_time = simultaneity(h);
   for (const ShapePair& p : c.pairs) {
-    const auto tau = impact_time({shapes[p.first], start[p.first], end[p.first]},
-                                 {shapes[p.second], start[p.second], end[p.second]}, *c.motion,
-                                 {0.0, h}, filter);
+    const auto tau = impact_time({shapes[p.first], start[p.first]},
+                                 {shapes[p.second], start[p.second]}, *c.motion, {0.0, h}, filter);
     if (!tau) continue;
     if (!best || *tau < *best - same_time) {
       best = tau;

@@ -39,6 +39,10 @@ struct Ballistic {
   /// Velocities of `body` after τ [s].
   Vec2 velocity(BodyId body, double tau) const;
   double angular_velocity(BodyId body, double tau) const;
+  /// `shape` placed where its body is after τ [s].
+  WorldShape placed(const ShapeRecord& shape, double tau) const {
+    return to_world(shape.local, shape.frame(position(shape.body, tau), angle(shape.body, tau)));
+  }
 };
 
 /// Fastest any point of shape `a` can move towards any point of shape `b` during a step of h [s]
@@ -58,11 +62,11 @@ inline ImpactFilter impact_filter(const Settings& settings) {
   return {settings.linear_slop, settings.restitution_threshold, settings.contact_margin};
 }
 
-/// A shape with its placements at the two ends of a window of the step.
+/// A shape with its placement at the start of a window of the step (its placement at the end
+/// is made only for the few pairs that get as far as needing it).
 struct SweptShape {
   const ShapeRecord& shape;
   const WorldShapeView& at_t0;
-  const WorldShapeView& at_h;
 };
 
 /// The part (t0, h] of a step that a search covers [s, from the start of the step].

@@ -28,12 +28,10 @@ void LocalImpacts::classify(StepContext& ctx) {
   if (!ctx.impacts_allowed()) return;
   ContactSet& contacts = ctx.contacts;
   const WorldShapes& start = ctx.world_start;
-  const WorldShapes& end = ctx.world_end;
   const ImpactFilter f = impact_filter(ctx.settings);
   const auto impact_of = [&](const ShapePair& p) {
-    return impact_time({ctx.shapes[p.first], start[p.first], end[p.first]},
-                       {ctx.shapes[p.second], start[p.second], end[p.second]}, *ctx.motion,
-                       {0.0, ctx.h}, f);
+    return impact_time({ctx.shapes[p.first], start[p.first]},
+                       {ctx.shapes[p.second], start[p.second]}, *ctx.motion, {0.0, ctx.h}, f);
   };
   // The time of impact of pair `p` unless it touches already (the contact solver's then, and no
   // distance to compute); `contact` is the first contact not before p's, as both lists are sorted
@@ -209,13 +207,13 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
   const double h = ctx.h;
   const Ballistic& motion = *ctx.motion;
   WorldShapes& rest_start = ctx.world_start;
-  WorldShapes& end = ctx.world_end;
+  WorldBounds& end = ctx.end_bounds;
   const auto frame_at = [&](std::uint32_t i, double when) {
-    const BodyId b = ctx.shapes[i].body;
-    return Transform(motion.position(b, when), motion.angle(b, when));
+    const ShapeRecord& s = ctx.shapes[i];
+    return s.frame(motion.position(s.body, when), motion.angle(s.body, when));
   };
-  // First every changed shape placed where the rest of its path starts and ends, so that two
-  // changed shapes see each other's.
+  // First every changed shape placed where the rest of its path starts (and its box where it
+  // ends), so that two changed shapes see each other's.
   for (BodyId b : changed) {
     for (auto [i, last] = ctx.shapes.of_body(b); i < last; ++i) {
       end.place(i, ctx.shapes[i].local, frame_at(i, h));
@@ -246,13 +244,13 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
           const double thinner =
               std::min(half_thickness(ctx.shapes[i].local), half_thickness(ctx.shapes[k].local));
           if (reach_left < thinner) continue;
-          const double gap = signed_distance(here, to_world(ctx.shapes[k].local, frame_at(k, tau)));
+          const double gap = signed_distance(here, motion.placed(ctx.shapes[k], tau));
           if (reach_left >= std::max(gap, 0.0) + thinner) return false;
           continue;
         }
-        const WorldShape there = to_world(ctx.shapes[k].local, frame_at(k, tau));
-        const auto when = impact_time({ctx.shapes[i], here, end[i]}, {ctx.shapes[k], there, end[k]},
-                                      motion, {tau, h}, f);
+        const WorldShape there = motion.placed(ctx.shapes[k], tau);
+        const auto when =
+            impact_time({ctx.shapes[i], here}, {ctx.shapes[k], there}, motion, {tau, h}, f);
         if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
       }
     }

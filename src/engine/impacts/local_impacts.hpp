@@ -41,8 +41,8 @@ class LocalImpacts {
   /// and logs them in the context's impacts (counted against Settings::max_impacts_per_step).
   /// Each body an impact changes gets, in the start state, the state from which its ballistic
   /// path over the step passes through its state just after the impact; its shapes' placements
-  /// follow: in world_start where the rest of the path starts (at the impact), in world_end where
-  /// it ends. The other contacts of the changed bodies (none of them engaged, since a changed
+  /// follow: in world_start where the rest of the path starts (at the impact), in end_bounds
+  /// where it ends. The other contacts of the changed bodies (none of them engaged, since a changed
   /// body is not the solver's) are dropped, as hand_over() drops those of the bodies with
   /// impacts: they were made from the bodies' old paths. The search after each impact finds the
   /// changed bodies' impacts with the bodies outside the solver; with a body of the solver it
@@ -73,7 +73,7 @@ class LocalImpacts {
   /// Moves body b in `start` along its ballistic path from there by τ [s] (back for τ < 0).
   void follow_path(BodyId b, double tau, StepContext& ctx) const;
   /// Finds the impacts from τ on of the shapes of the changed bodies (changed_), whose paths
-  /// have changed, having placed them at τ in world_start and at h in world_end; false when one
+  /// have changed, having placed them at τ in world_start and at h in end_bounds; false when one
   /// of them could pass through a body of the contact solver.
   bool search_after(StepContext& ctx, double tau);
 

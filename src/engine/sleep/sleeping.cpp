@@ -35,8 +35,9 @@ bool wake_touched(StepContext& c) {
   for (BodyId k : c.kinematic) {
     if (c.state.velocity[k] == Vec2::Zero() && c.state.angular_velocity[k] == 0.0) continue;
     for (auto [i, last] = c.shapes.of_body(k); i < last; ++i) {
-      const Aabb swept =
-          c.world_start.bounds(i).united(c.world_end.bounds(i)).fattened(c.settings.contact_margin);
+      const Aabb swept = c.world_start.bounds(i)
+                             .united(c.end_bounds.bounds(i))
+                             .fattened(c.settings.contact_margin);
       for (std::uint32_t s = 0; s < c.shapes.size(); ++s) {
         const BodyId j = c.shapes[s].body;
         if (asleep(c, j) && swept.overlaps(c.world_start.bounds(s))) {

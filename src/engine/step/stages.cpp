@@ -42,7 +42,7 @@ std::string count(std::size_t n, const std::string& what) {
 }
 
 // The ballistic paths over the sub-step under the accelerations at its start, the shapes placed at
-// both ends of them, and the candidate pairs of the boxes swept between.
+// their start, their boxes at their end, and the candidate pairs of the boxes swept between.
 bool sweep(StepContext& c, StepMechanisms& m) {
   const PathShape shape = c.integrator->path_under_constant_acceleration();
   if (c.forces.constant()) {
@@ -59,8 +59,8 @@ bool sweep(StepContext& c, StepMechanisms& m) {
   const Ballistic& path = *c.motion;
   const double h = c.h;
   c.shapes.place([&](BodyId j) { return std::pair(path.position(j, h), path.angle(j, h)); },
-                 c.world_end);
-  c.pairs = m.detection.candidate_pairs(c.shapes, c.dynamic, c.world_start, c.world_end);
+                 c.end_bounds);
+  c.pairs = m.detection.candidate_pairs(c.shapes, c.dynamic, c.world_start, c.end_bounds);
   return true;
 }
 

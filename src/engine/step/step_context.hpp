@@ -13,6 +13,7 @@
 #include "engine/core.hpp"
 #include "engine/dynamics/force_model.hpp"
 #include "engine/dynamics/integrator.hpp"
+#include "engine/geometry/world_bounds.hpp"
 #include "engine/geometry/world_shapes.hpp"
 #include "engine/impacts/impacts.hpp"
 #include "engine/solver/contact_set.hpp"
@@ -48,7 +49,8 @@ struct StepContext {
   std::optional<Ballistic> motion;     ///< the paths from `start` under its accelerations
 
   // Collisions.
-  WorldShapes world_start, world_end;   ///< the shapes placed at the start and at the end of h
+  WorldShapes world_start;              ///< the shapes placed at the start of h
+  WorldBounds end_bounds;               ///< their boxes at the end of h, along `motion`
   std::span<const ShapePair> pairs;     ///< the candidate pairs the contacts are found for (in a
                                         ///< sub-step, without its impact pairs)
   std::vector<ShapePair> impact_pairs;  ///< resolved at the end of the sub-step, at its t_c
