@@ -322,3 +322,27 @@ TEST_CASE("A shape's box placed alone is the box of the shape placed whole, bit 
     CHECK((boxes.bounds(0).max - (centre + half)).norm() < 1e-9);
   }
 }
+
+TEST_CASE("Identical polygons added one after another share their vertices",
+          "[FR:Determine-Collisions]") {
+  gp::BodyShapes records;
+  records.add(0, Shape::box(1.0, 1.0), 0.0, 0.5, true);
+  records.add(1, Shape::box(1.0, 1.0), 0.0, 0.5, true);
+  records.add(2, Shape::box(1.0, 2.0), 0.0, 0.5, true);
+  records.add(3, Shape::box(1.0, 2.0), 0.0, 0.5, true);
+  const auto vertices = [&](std::size_t i) { return records[i].local.polygon().vertices; };
+  CHECK(vertices(0).data() == vertices(1).data());
+  CHECK(vertices(1).data() != vertices(2).data());
+  CHECK(vertices(2).data() == vertices(3).data());
+  // A shared block outlives the shapes it was made for, and is shared no more after a removal.
+  records.remove_body(2);
+  records.remove_body(0);
+  records.add(4, Shape::box(1.0, 2.0), 0.0, 0.5, true);
+  REQUIRE(records.size() == 3);
+  CHECK(vertices(1).data() != vertices(2).data());
+  const gp::WorldShape kept = gp::to_world(records[1].local, gp::Transform({0.0, 0.0}));
+  const gp::WorldShape fresh = gp::to_world(Shape::box(1.0, 2.0), gp::Transform({0.0, 0.0}));
+  CHECK(kept.bounds.min == fresh.bounds.min);
+  CHECK(kept.bounds.max == fresh.bounds.max);
+  CHECK(kept.bounds.min == Vec2(-0.5, -1.0));
+}

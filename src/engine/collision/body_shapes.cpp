@@ -1,6 +1,7 @@
 #include "engine/collision/body_shapes.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <variant>
 
@@ -18,10 +19,22 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
   GeometryView kept = view_of(local.geometry());
   if (const auto* polygon = std::get_if<PolygonView>(&kept)) {
     const std::size_t count = polygon->vertices.size();
-    auto& block = polygons_.emplace_back(std::make_unique<Vec2[]>(2 * count));
-    std::copy(polygon->vertices.begin(), polygon->vertices.end(), block.get());
-    std::copy(polygon->normals.begin(), polygon->normals.end(), block.get() + count);
-    kept = PolygonView{std::span(block.get(), count), std::span(block.get() + count, count)};
+    // A pile of identical boxes keeps one block: a polygon the same as the last one added, bit
+    // for bit, shares its block.
+    const auto same = [count](std::span<const Vec2> a, std::span<const Vec2> b) {
+      return a.size() == count && std::memcmp(a.data(), b.data(), count * sizeof(Vec2)) == 0;
+    };
+    if (same(last_polygon_.vertices, polygon->vertices) &&
+        same(last_polygon_.normals, polygon->normals)) {
+      polygons_.push_back(polygons_.back());
+    } else {
+      auto block = std::make_shared<Vec2[]>(2 * count);
+      std::copy(polygon->vertices.begin(), polygon->vertices.end(), block.get());
+      std::copy(polygon->normals.begin(), polygon->normals.end(), block.get() + count);
+      polygons_.push_back(std::move(block));
+    }
+    const Vec2* block = polygons_.back().get();
+    kept = last_polygon_ = PolygonView{std::span(block, count), std::span(block + count, count)};
     polygon_vertices_ += count;
   }
   append(records_, {PackedGeometry(kept), body, moves, restitution, friction});
@@ -50,6 +63,7 @@ BodyShapes::Range BodyShapes::remove_body(BodyId body) {
     if (r->restitution > 0.0) --bouncing_;
   }
   polygons_.erase(polygons_.begin() + first_block, polygons_.begin() + first_block + blocks);
+  last_polygon_ = {};  // its block may have gone with the body
   records_.erase(before, after);
   const std::uint32_t count = removed.last - removed.first;
   for (std::size_t b = body + std::size_t{1}; b < first_.size(); ++b) first_[b] -= count;

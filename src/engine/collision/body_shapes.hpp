@@ -84,9 +84,11 @@ class BodyShapes {
   void lay_out(WorldBounds& world) const { world.lay_out(records_.size()); }
 
   std::vector<ShapeRecord> records_;
-  // Per polygon, its vertices then its normals: a block each, which stays where it is as shapes
-  // are added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is.
-  std::vector<std::unique_ptr<Vec2[]>> polygons_;
+  // Per polygon, its vertices then its normals: a block, which stays where it is as shapes are
+  // added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is, and shared
+  // with the polygons added after it that are the same.
+  std::vector<std::shared_ptr<const Vec2[]>> polygons_;
+  PolygonView last_polygon_;          // in the last polygon's block
   std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::size_t bouncing_ = 0;          // shapes with a restitution above 0
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
