@@ -87,10 +87,13 @@ inline Vec2 arm_from(const Vec2& normal, double normal_arm, double tangent_arm) 
 /// GD:impulse's denominators; and its inverse [kg].
 struct NormalBlock {
   double k11 = 0.0, k12 = 0.0, k22 = 0.0;
+  /// All 0 when the block is not solvable; inverse11 = k22 / det(K) is then above 0, as k22 > 0,
+  /// det(K) > 0 and k22 / det(K) ≥ 1 / k11: a flag of its own would take 8 bytes more a block.
   double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;
+
   /// False when the two points are nearly redundant (ill-conditioned K): the solver then takes
   /// them one by one.
-  bool solvable = false;
+  bool solvable() const { return inverse11 > 0.0; }
 };
 
 /// A contact constraint between two shapes; its points and, for two points, its block are kept

@@ -115,7 +115,7 @@ namespace {
 // the one-by-one solver, when the two points are nearly redundant (ill-conditioned matrix).
 bool solve_pair(const Contact& c, const NormalBlock& k, ContactPointState& p, ContactPointState& q,
                 PairMotion& m) {
-  if (!k.solvable) return false;
+  if (!k.solvable()) return false;
   const Vec2 old{p.normal_impulse, q.normal_impulse};
   // Velocities the constraints must reach, less what the impulses already applied give.
   const Vec2 b{
@@ -241,8 +241,7 @@ void fill_normal_block(const BodyInertia& inertia, const Contact& c, const Conta
   k.k12 = normal_coupling(c, p, c, q, inertia);
   const double determinant = k.k11 * k.k22 - k.k12 * k.k12;
   // Box2D's bound on K's condition number, past which the block solve amplifies round-off.
-  k.solvable = k.k11 * k.k11 < 1000.0 * determinant;
-  if (k.solvable) {
+  if (k.k11 * k.k11 < 1000.0 * determinant) {
     k.inverse11 = k.k22 / determinant;
     k.inverse12 = -k.k12 / determinant;
     k.inverse22 = k.k11 / determinant;
