@@ -1,7 +1,7 @@
 #pragma once
 // The bounding box of every shape of a space placed in the world at one instant, and nothing
 // else: the broadphase needs no more of the shapes at the end of a step, and the time-of-impact
-// search, the one reader of their geometry there, places the few shapes it gets that far with.
+// search, their one other reader, places a pair there itself when it gets that far.
 
 #include <cstddef>
 #include <vector>
