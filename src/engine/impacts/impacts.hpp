@@ -39,9 +39,12 @@ struct Ballistic {
   /// Velocities of `body` after τ [s].
   Vec2 velocity(BodyId body, double tau) const;
   double angular_velocity(BodyId body, double tau) const;
-  /// `shape` placed where its body is after τ [s].
+  /// Where `shape` is after τ [s] (ShapeRecord::frame), and the shape placed there.
+  Transform frame(const ShapeRecord& shape, double tau) const {
+    return shape.frame(position(shape.body, tau), angle(shape.body, tau));
+  }
   WorldShape placed(const ShapeRecord& shape, double tau) const {
-    return to_world(shape.local, shape.frame(position(shape.body, tau), angle(shape.body, tau)));
+    return to_world(shape.local, frame(shape, tau));
   }
 };
 

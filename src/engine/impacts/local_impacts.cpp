@@ -208,16 +208,13 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
   const Ballistic& motion = *ctx.motion;
   WorldShapes& rest_start = ctx.world_start;
   WorldBounds& end = ctx.end_bounds;
-  const auto frame_at = [&](std::uint32_t i, double when) {
-    const ShapeRecord& s = ctx.shapes[i];
-    return s.frame(motion.position(s.body, when), motion.angle(s.body, when));
-  };
   // First every changed shape placed where the rest of its path starts (and its box where it
   // ends), so that two changed shapes see each other's.
   for (BodyId b : changed) {
     for (auto [i, last] = ctx.shapes.of_body(b); i < last; ++i) {
-      end.place(i, ctx.shapes[i].local, frame_at(i, h));
-      rest_start.place(i, ctx.shapes[i].local, frame_at(i, tau));
+      const ShapeRecord& shape = ctx.shapes[i];
+      end.place(i, shape.local, motion.frame(shape, h));
+      rest_start.place(i, shape.local, motion.frame(shape, tau));
     }
   }
   const double half_margin = 0.5 * ctx.settings.contact_margin;
