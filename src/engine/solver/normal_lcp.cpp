@@ -19,6 +19,12 @@ constexpr double kRoundOff = 1e-10;
 // a (normal, not subnormal) tolerance.
 constexpr double kTiny = 1e-200;
 
+// How a round's pushing set was solved.
+struct RoundSolve {
+  bool solved;    // false: K restricted to the pushing points is not positive definite
+  bool factored;  // with a new factorisation
+};
+
 // Point i's speed w_i = w₀_i + (K + compliance) Δλ after the impulse changes `change` [m/s]: the
 // one problem, K with its compliance, that every round works on (on which Murty's rule cannot
 // cycle). A dense K, row by row: only the rows a round needs.
@@ -53,6 +59,7 @@ void order_points(const SparseK& k, NormalLcpScratch& scratch) {
   sparse.ordering(k, sparse.to_point);
   sparse.to_position = sparse.to_point.inverse();
   sparse.k_ordered = k.twistedBy(sparse.to_position);
+  sparse.factored_positions.clear();
   const int* const to_point = sparse.to_point.indices().data();
   scratch.point_at.assign(to_point, to_point + k.rows());
 }
@@ -74,10 +81,10 @@ void list_pushing(const Eigen::Ref<const Eigen::VectorXd>& start, NormalLcpScrat
 }
 
 // The pushing points' Δλ, so that they push (w = 0) while the free ones let go (λ = 0), into
-// scratch.change, and the free points' speeds after it into scratch.speed, for a dense K. Returns
-// false if K restricted to the pushing points is not positive definite.
-bool solve_listed(const Eigen::Ref<const Eigen::MatrixXd>& k,
-                  const Eigen::Ref<const Eigen::VectorXd>& w0, NormalLcpScratch& scratch) {
+// scratch.change, and the free points' speeds after it into scratch.speed, for a dense K.
+RoundSolve solve_listed(const Eigen::Ref<const Eigen::MatrixXd>& k,
+                        const Eigen::Ref<const Eigen::VectorXd>& w0, const NormalLcpOptions&,
+                        NormalLcpScratch& scratch) {
   const Eigen::Index n = k.rows();
   auto change = scratch.change.head(n);
   const auto a = static_cast<Eigen::Index>(scratch.pushing_rows.size());
@@ -96,32 +103,27 @@ bool solve_listed(const Eigen::Ref<const Eigen::MatrixXd>& k,
       k_pushing(r, r) *= 1.0 + kCompliance;
     }
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> factor(k_pushing);
-    if (factor.info() != Eigen::Success) return false;
+    if (factor.info() != Eigen::Success) return {false, true};
     factor.solveInPlace(rhs);
     for (Eigen::Index r = 0; r < a; ++r) change(scratch.pushing_rows[r]) = rhs(r);
   }
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!scratch.pushing[i]) scratch.speed(i) = speed_after(k, w0, change, i);
   }
-  return true;
+  return {true, a > 0};
 }
 
-// The same for a sparse K, whose rows and columns come in the fill-reducing order.
-bool solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
-                  NormalLcpScratch& scratch) {
-  speeds_after_change(k, w0, scratch);
-  const auto a = static_cast<Eigen::Index>(scratch.pushing_rows.size());
-  if (a == 0) return true;
-  auto rhs = scratch.rhs.head(a);
+// Factors K with its compliance restricted to the pushing points, rows in the order, into
+// sparse.factor, and makes them the factored set. Returns false if it is not positive definite.
+bool factor_pushing(NormalLcpScratch& scratch) {
   SparseLcpScratch& sparse = *scratch.sparse;
+  const auto a = static_cast<Eigen::Index>(scratch.pushing_rows.size());
   SparseK& k_pushing = sparse.k_pushing;
   k_pushing.resize(a, a);
-  k_pushing.reserve(k.nonZeros());
+  k_pushing.reserve(sparse.k_ordered.nonZeros());
   for (Eigen::Index q = 0; q < a; ++q) {
-    const int column = scratch.pushing_rows[q];
-    rhs(q) = -scratch.speed(scratch.point_at[column]);
     k_pushing.startVec(q);
-    for (SparseK::InnerIterator entry(sparse.k_ordered, column); entry; ++entry) {
+    for (SparseK::InnerIterator entry(sparse.k_ordered, scratch.pushing_rows[q]); entry; ++entry) {
       const int r = scratch.pushing_row[scratch.point_at[entry.row()]];
       if (r < 0) continue;
       k_pushing.insertBack(r, q) = r == q ? entry.value() * (1.0 + kCompliance) : entry.value();
@@ -129,12 +131,115 @@ bool solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
   }
   k_pushing.finalize();
   sparse.factor.compute(k_pushing);
-  if (sparse.factor.info() != Eigen::Success) return false;
-  rhs = sparse.factor.solve(rhs);
-  for (Eigen::Index q = 0; q < a; ++q)
-    scratch.change(scratch.point_at[scratch.pushing_rows[q]]) = rhs(q);
-  speeds_after_change(k, w0, scratch);
+  sparse.factored_row = scratch.pushing_row;
+  sparse.factored_positions = scratch.pushing_rows;
+  sparse.let_go.clear();
+  return sparse.factor.info() == Eigen::Success;
+}
+
+// Whether the factored set still serves the pushing points: each of them is in it, and at most
+// `most_let_go` of its points have let go since (into sparse.let_go, as its rows).
+bool factor_serves(std::size_t most_let_go, NormalLcpScratch& scratch) {
+  SparseLcpScratch& sparse = *scratch.sparse;
+  if (sparse.factored_positions.empty()) return false;
+  sparse.let_go.clear();
+  for (std::size_t row = 0; row < sparse.factored_positions.size(); ++row) {
+    const int i = scratch.point_at[sparse.factored_positions[row]];
+    if (scratch.pushing[i]) continue;
+    if (sparse.let_go.size() == most_let_go) return false;
+    sparse.let_go.push_back(static_cast<int>(row));
+  }
+  for (const int position : scratch.pushing_rows) {
+    if (sparse.factored_row[scratch.point_at[position]] < 0) return false;
+  }
   return true;
+}
+
+// W = L⁻¹ E into sparse.border, L Lᵀ being the factored matrix and E the identity's columns of
+// the let-go rows, and the Cholesky factor of WᵀW, their block of the factored matrix's inverse.
+// Returns false if WᵀW is not positive definite in floating point.
+bool border(SparseLcpScratch& sparse) {
+  const auto rows = static_cast<Eigen::Index>(sparse.factored_positions.size());
+  SparseK& w = sparse.border;
+  w.resize(rows, static_cast<Eigen::Index>(sparse.let_go.size()));
+  // Column by column through one dense column, whose solve skips its zeros: W holds a few hundred
+  // entries a column, the let-go row's path to the root of the factor's elimination tree.
+  Eigen::VectorXd& column = sparse.residual;
+  column.setZero(rows);
+  for (std::size_t q = 0; q < sparse.let_go.size(); ++q) {
+    column(sparse.let_go[q]) = 1.0;
+    sparse.factor.matrixL().solveInPlace(column);
+    w.startVec(static_cast<Eigen::Index>(q));
+    for (Eigen::Index row = sparse.let_go[q]; row < rows; ++row) {
+      if (column(row) == 0.0) continue;
+      w.insertBack(row, static_cast<Eigen::Index>(q)) = column(row);
+      column(row) = 0.0;
+    }
+  }
+  w.finalize();
+  // WᵀW by the columns' dot products, each a merge of two paths: Eigen's sparse product of the
+  // two takes twice as long.
+  const Eigen::Index let_go = w.cols();
+  Eigen::MatrixXd& gram = sparse.gram;
+  gram.resize(let_go, let_go);
+  for (Eigen::Index j = 0; j < let_go; ++j) {
+    for (Eigen::Index q = j; q < let_go; ++q) gram(q, j) = w.col(q).dot(w.col(j));
+  }
+  sparse.border_gram.compute(gram);
+  return sparse.border_gram.info() == Eigen::Success;
+}
+
+// Solves A z = b in place on the rows of the factored matrix A = L Lᵀ other than the let-go ones,
+// where z = 0 instead: z = L⁻ᵀ (u + W y), with u = L⁻¹ b and y = −(WᵀW)⁻¹ Wᵀ u, so that
+// Eᵀz = Wᵀ(u + W y) = 0 and A z = b + E y.
+void solve_bordered(SparseLcpScratch& sparse, Eigen::Ref<Eigen::VectorXd> z) {
+  sparse.factor.matrixL().solveInPlace(z);
+  const SparseK& w = sparse.border;
+  z -= w * sparse.border_gram.solve(w.transpose() * z);
+  sparse.factor.matrixU().solveInPlace(z);
+  for (const int row : sparse.let_go) z(row) = 0.0;
+}
+
+// The pushing points' Δλ and every point's speed after it, as for a dense K, from the factored
+// set's factor: made anew unless it still serves (factor_serves), in which case the let-go
+// points' rows border it, and one round of refinement takes back what the bordering loses to
+// round-off (it cancels entries of K⁻¹ as large as the compliance makes them).
+RoundSolve solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
+                        const NormalLcpOptions& options, NormalLcpScratch& scratch) {
+  speeds_after_change(k, w0, scratch);
+  if (scratch.pushing_rows.empty()) return {true, false};
+  SparseLcpScratch& sparse = *scratch.sparse;
+  const bool bordered = factor_serves(options.most_let_go, scratch) && border(sparse);
+  if (!bordered && !factor_pushing(scratch)) return {false, true};
+  const auto rows = static_cast<Eigen::Index>(sparse.factored_positions.size());
+  const auto point_of = [&](Eigen::Index row) {
+    return scratch.point_at[sparse.factored_positions[static_cast<std::size_t>(row)]];
+  };
+  // The speed the free points' letting go leaves, to be undone by the pushing points.
+  Eigen::VectorXd& target = sparse.target;
+  target.resize(rows);
+  for (Eigen::Index row = 0; row < rows; ++row) {
+    const int i = point_of(row);
+    target(row) = scratch.pushing[i] ? -scratch.speed(i) : 0.0;
+  }
+  auto rhs = scratch.rhs.head(rows);
+  if (bordered) {
+    rhs = target;
+    solve_bordered(sparse, rhs);
+    Eigen::VectorXd& residual = sparse.residual;
+    residual.noalias() = target - sparse.k_pushing * rhs;
+    for (const int row : sparse.let_go) residual(row) = 0.0;
+    solve_bordered(sparse, residual);
+    rhs += residual;
+  } else {
+    rhs = sparse.factor.solve(target);
+  }
+  for (Eigen::Index row = 0; row < rows; ++row) {
+    const int i = point_of(row);
+    if (scratch.pushing[i]) scratch.change(i) = rhs(row);
+  }
+  speeds_after_change(k, w0, scratch);
+  return {true, !bordered};
 }
 
 template <typename Matrix>
@@ -168,9 +273,12 @@ NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorX
   }
   Eigen::Index fewest_wrong = n + 1;
   int block_rounds_left = 0;
+  int factorisations = 0;
   for (int round = 1; round <= options.max_rounds; ++round) {
     list_pushing(start, scratch);
-    if (!solve_listed(k, w0, scratch)) return {false, round};
+    const RoundSolve solve = solve_listed(k, w0, options, scratch);
+    factorisations += solve.factored;
+    if (!solve.solved) return {false, round, factorisations};
     if (at_rest != nullptr) {
       for (Eigen::Index i = 0; i < n; ++i) {
         speed_scale = std::max(speed_scale, scratch.diagonal(i) * std::abs(change(i)));
@@ -189,7 +297,7 @@ NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorX
     }
     if (wrong == 0) {
       impulse = (start + change).cwiseMax(0.0);
-      return {true, round};
+      return {true, round, factorisations};
     }
     if (wrong < fewest_wrong) {
       fewest_wrong = wrong;
@@ -203,7 +311,7 @@ NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorX
       scratch.pushing[last_wrong] ^= 1;
     }
   }
-  return {false, options.max_rounds};
+  return {false, options.max_rounds, factorisations};
 }
 
 }  // namespace

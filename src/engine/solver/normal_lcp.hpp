@@ -3,6 +3,7 @@
 // principal pivoting. Kept apart from the island's assembly (island_solver.hpp) so that it can
 // be checked on problems whose solution is known.
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -21,14 +22,27 @@ namespace gp {
 using SparseK = Eigen::SparseMatrix<double>;
 
 /// What solve_normal_lcp keeps for a sparse K: the order of its points (AMD), whose room a pile's
-/// points, numbered as its contacts come, would fill the factor in, and each round's factor.
+/// points, numbered as its contacts come, would fill the factor in, and the last factor of the
+/// solve, with the pushing set it was made for. A later round whose pushing points are all among
+/// that set's, less a few that let go, is solved with that factor, bordered by the rows of those
+/// few, rather than with a new one: a pile's later rounds free tens of its tens of thousands of
+/// points.
 struct SparseLcpScratch {
   Eigen::AMDOrdering<int> ordering;
   /// to_point maps a position in the order to a point, to_position back.
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> to_point, to_position;
   SparseK k_ordered;  ///< K, rows and columns in that order
-  SparseK k_pushing;  ///< K with its compliance, restricted to the pushing points
+  SparseK k_pushing;  ///< K with its compliance, restricted to the factored pushing set
   Eigen::SimplicialLLT<SparseK, Eigen::Lower, Eigen::NaturalOrdering<int>> factor;
+  std::vector<int> factored_row;        ///< per point: its row in `factor`, or −1
+  std::vector<int> factored_positions;  ///< per row of `factor`: its point's position in the order
+  std::vector<int> let_go;              ///< rows of `factor` whose points no longer push
+  SparseK border;                       ///< L⁻¹ times the identity's columns of those rows
+  Eigen::MatrixXd gram;                 ///< its Gram matrix (lower triangle), those rows'
+                                        ///< block of the factored matrix's inverse
+  Eigen::LLT<Eigen::MatrixXd> border_gram;  ///< of `gram`
+  Eigen::VectorXd target;                   ///< the right-hand side over the rows of `factor`
+  Eigen::VectorXd residual;                 ///< what a bordered solve leaves of it
 };
 
 /// Scratch for solve_normal_lcp, kept by the caller so that a step reuses the room of the last.
@@ -63,7 +77,10 @@ struct NormalLcpResult {
   /// false: no solution within the round limit, a zero diagonal entry of K, or K restricted to
   /// a pushing set not positive definite in floating point
   bool solved;
-  int rounds;  ///< pushing sets tried (each a sparse Cholesky factorisation unless it is empty)
+  int rounds;  ///< pushing sets tried
+  /// Cholesky factorisations made: one a round, but for empty pushing sets and the rounds of a
+  /// sparse K that border the last factor (NormalLcpOptions::most_let_go).
+  int factorisations = 0;
 };
 
 /// The most pushing sets the engine lets solve_normal_lcp try, each a Cholesky factorisation of
@@ -86,10 +103,18 @@ struct IslandAtRest {
   std::span<const std::uint8_t> unloaded;
 };
 
+/// The most points of the last factored pushing set of a sparse K that may have let go for a
+/// round to border that factor rather than make a new one: bordering costs a sparse triangular
+/// solve for each, and 70 of them a quarter of a new factor of a 100-row pyramid's 20,000 pushing
+/// points.
+inline constexpr std::size_t kNormalLcpMostLetGo = 128;
+
 /// How solve_normal_lcp goes about a problem.
 struct NormalLcpOptions {
   int max_rounds = kNormalLcpMaxRounds;   ///< the most pushing sets it tries
   const IslandAtRest* at_rest = nullptr;  ///< set for an island at rest (see solve_normal_lcp)
+  /// Of a sparse K: the most let-go points a factor is bordered with (0: a new factor a round).
+  std::size_t most_let_go = kNormalLcpMostLetGo;
 };
 
 /// Finds the normal impulses λ [N·s] of n contact points with
@@ -120,7 +145,9 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
                                  const NormalLcpOptions& options = {});
 /// The same for a sparse K, each round's pushing set in one fill-reducing order: for the large
-/// islands, where a round of the dense solve would cost the cube of their points.
+/// islands, where a round of the dense solve would cost the cube of their points. A round that
+/// only lets a few points go (`options.most_let_go`) borders the last factor with their rows
+/// instead of making a new one, to the same solution up to round-off.
 NormalLcpResult solve_normal_lcp(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
