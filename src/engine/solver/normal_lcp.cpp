@@ -185,8 +185,8 @@ bool border(SparseLcpScratch& sparse) {
   for (Eigen::Index j = 0; j < let_go; ++j) {
     for (Eigen::Index q = j; q < let_go; ++q) gram(q, j) = w.col(q).dot(w.col(j));
   }
-  sparse.border_gram.compute(gram);
-  return sparse.border_gram.info() == Eigen::Success;
+  sparse.gram_factor.compute(gram);
+  return sparse.gram_factor.info() == Eigen::Success;
 }
 
 // Solves A z = b in place on the rows of the factored matrix A = L Lᵀ other than the let-go ones,
@@ -195,7 +195,7 @@ bool border(SparseLcpScratch& sparse) {
 void solve_bordered(SparseLcpScratch& sparse, Eigen::Ref<Eigen::VectorXd> z) {
   sparse.factor.matrixL().solveInPlace(z);
   const SparseK& w = sparse.border;
-  z -= w * sparse.border_gram.solve(w.transpose() * z);
+  z -= w * sparse.gram_factor.solve(w.transpose() * z);
   sparse.factor.matrixU().solveInPlace(z);
   for (const int row : sparse.let_go) z(row) = 0.0;
 }

@@ -40,7 +40,7 @@ struct SparseLcpScratch {
   SparseK border;                       ///< L⁻¹ times the identity's columns of those rows
   Eigen::MatrixXd gram;                 ///< its Gram matrix (lower triangle), those rows'
                                         ///< block of the factored matrix's inverse
-  Eigen::LLT<Eigen::MatrixXd> border_gram;  ///< of `gram`
+  Eigen::LLT<Eigen::MatrixXd> gram_factor;  ///< of `gram`
   Eigen::VectorXd target;                   ///< the right-hand side over the rows of `factor`
   Eigen::VectorXd residual;                 ///< what a bordered solve leaves of it
 };
