@@ -269,7 +269,7 @@ TEST_CASE(
   CHECK(result.rounds <= 3);
   check_complementary(k, w0, start, impulse, true);
   // Its later rounds only let points go, and border the first round's factor. A new factor every
-  // round gives the same impulses, to round-off.
+  // round gives the same motions, to round-off.
   CHECK(result.factorisations == 1);
   Eigen::VectorXd refactored(n);
   const gp::NormalLcpResult refactored_result = gp::solve_normal_lcp(

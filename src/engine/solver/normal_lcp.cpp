@@ -131,7 +131,6 @@ bool factor_pushing(NormalLcpScratch& scratch) {
   }
   k_pushing.finalize();
   sparse.factor.compute(k_pushing);
-  sparse.factored_row = scratch.pushing_row;
   sparse.factored_positions = scratch.pushing_rows;
   sparse.let_go.clear();
   return sparse.factor.info() == Eigen::Success;
@@ -149,10 +148,8 @@ bool factor_serves(std::size_t most_let_go, NormalLcpScratch& scratch) {
     if (sparse.let_go.size() == most_let_go) return false;
     sparse.let_go.push_back(static_cast<int>(row));
   }
-  for (const int position : scratch.pushing_rows) {
-    if (sparse.factored_row[scratch.point_at[position]] < 0) return false;
-  }
-  return true;
+  // The factored points still pushing are all the pushing points only if they are as many.
+  return sparse.factored_positions.size() - sparse.let_go.size() == scratch.pushing_rows.size();
 }
 
 // W = L⁻¹ E into sparse.border, L Lᵀ being the factored matrix and E the identity's columns of

@@ -34,7 +34,6 @@ struct SparseLcpScratch {
   SparseK k_ordered;  ///< K, rows and columns in that order
   SparseK k_pushing;  ///< K with its compliance, restricted to the factored pushing set
   Eigen::SimplicialLLT<SparseK, Eigen::Lower, Eigen::NaturalOrdering<int>> factor;
-  std::vector<int> factored_row;        ///< per point: its row in `factor`, or −1
   std::vector<int> factored_positions;  ///< per row of `factor`: its point's position in the order
   std::vector<int> let_go;              ///< rows of `factor` whose points no longer push
   SparseK border;                       ///< L⁻¹ times the identity's columns of those rows
