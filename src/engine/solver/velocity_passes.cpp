@@ -267,13 +267,19 @@ void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPrepara
   const Contact& c = contacts[i];
   const Vec2 tangent = contact_tangent(c.normal);
   const std::span<ContactPointState> points = contacts.points(c);
+  const bool bounces = in.shapes.any_bounce();
   for (ContactPointState& p : points) {
     const Vec2 arm_a = gp::arm_a(c, p);
     const Vec2 arm_b = gp::arm_b(c, p);
     p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
     p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
-    const double approach = contact_normal_velocity(in.before, c, p);
     p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in));
+    // Without a shape that bounces, no point does, and its approach need not be measured.
+    if (!bounces) {
+      p.bounce_velocity = 0.0;
+      continue;
+    }
+    const double approach = contact_normal_velocity(in.before, c, p);
     // A speculative point (still apart) bounces too if the solver ends up pushing on it:
     // apply_restitution acts only where the normal impulse is positive. The shapes' restitution
     // is looked up only then: a resting pile's points never approach that fast.
