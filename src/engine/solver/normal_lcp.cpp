@@ -161,7 +161,7 @@ bool border(SparseLcpScratch& sparse) {
   w.resize(rows, static_cast<Eigen::Index>(sparse.let_go.size()));
   // Column by column through one dense column, whose solve skips its zeros: W holds a few hundred
   // entries a column, the let-go row's path to the root of the factor's elimination tree.
-  Eigen::VectorXd& column = sparse.residual;
+  Eigen::VectorXd& column = sparse.column;
   column.setZero(rows);
   for (std::size_t q = 0; q < sparse.let_go.size(); ++q) {
     column(sparse.let_go[q]) = 1.0;
@@ -223,7 +223,7 @@ RoundSolve solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd
   if (bordered) {
     rhs = target;
     solve_bordered(sparse, rhs);
-    Eigen::VectorXd& residual = sparse.residual;
+    Eigen::VectorXd& residual = sparse.column;
     residual.noalias() = target - sparse.k_pushing * rhs;
     for (const int row : sparse.let_go) residual(row) = 0.0;
     solve_bordered(sparse, residual);

@@ -41,7 +41,9 @@ struct SparseLcpScratch {
                                         ///< block of the factored matrix's inverse
   Eigen::LLT<Eigen::MatrixXd> gram_factor;  ///< of `gram`
   Eigen::VectorXd target;                   ///< the right-hand side over the rows of `factor`
-  Eigen::VectorXd residual;                 ///< what a bordered solve leaves of it
+  /// A column over the rows of `factor`: each column of W as it is solved, then what a bordered
+  /// solve leaves of `target`.
+  Eigen::VectorXd column;
 };
 
 /// Scratch for solve_normal_lcp, kept by the caller so that a step reuses the room of the last.
