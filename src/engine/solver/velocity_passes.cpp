@@ -43,13 +43,15 @@ struct PairMotion {
         inverse_moment_b(m.inverse_moment[c.body_b]) {}
 
   // Only movable bodies are written: a static or kinematic body may be in contacts solved on
-  // other threads at the same time, and its motion does not change.
+  // other threads at the same time, and its motion does not change. Inverse masses and moments
+  // are at least 0, so their sum, both at hand, tells a movable body in one comparison (movable()
+  // takes two, each with its own test for NaN: 0.9% of rain1000's instructions).
   void store(const Contact& c, MotionState& s) const {
-    if (inverse_mass_a != 0.0 || inverse_moment_a != 0.0) {
+    if (inverse_mass_a + inverse_moment_a > 0.0) {
       s.velocity[c.body_a] = velocity_a;
       s.angular_velocity[c.body_a] = angular_velocity_a;
     }
-    if (inverse_mass_b != 0.0 || inverse_moment_b != 0.0) {
+    if (inverse_mass_b + inverse_moment_b > 0.0) {
       s.velocity[c.body_b] = velocity_b;
       s.angular_velocity[c.body_b] = angular_velocity_b;
     }
