@@ -156,9 +156,10 @@ namespace {
 
 // A body (1) of 1 kg and 1 kg·m² touching static ground (0) along the normal +y at one point
 // overlapping by `depth`, its shape's deepest point found at `arm` from its centre of mass; the
-// body then turned by `turn` about its centre of mass before the position pass. Returns how far
-// one position pass lifts it [m].
-double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth, double turn) {
+// body then turned by `turn` about its centre of mass and lowered by `drop` [m] before the
+// position pass (slop 0). Returns how far one position pass lifts it [m].
+double lift_after_motion(const gp::Shape& shape, const gp::Vec2& arm, double depth, double turn,
+                         double drop) {
   gp::BodyShapes shapes;
   shapes.add(0, gp::Shape::segment({-5.0, 0.0}, {5.0, 0.0}), 0.0, 0.0, false);
   shapes.add(1, shape, 0.0, 0.0, true);
@@ -166,7 +167,7 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
   gp::MotionState s;
   s.resize(2);
   s.position[1] = {0.0, -arm.y() - depth};  // the deepest point `depth` under the ground
-  const std::vector<double> detected_angle = s.angle;
+  const gp::MotionState detected = s;
   gp::ContactManifold m;
   m.normal = {0.0, 1.0};
   m.count = 1;
@@ -177,9 +178,14 @@ double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth
   gp::append_contact({1, 0}, shapes, m, s, contacts);
   contacts.points(contacts[0])[0].normal_mass = 1.0;
   s.angle[1] = turn;
+  s.position[1].y() -= drop;
   gp::PositionCorrection passes;
-  passes.correct(contacts, shapes, inertia, detected_angle, {1, 0.0}, s);
-  return s.position[1].y() + arm.y() + depth;
+  passes.correct(contacts, {shapes, inertia, detected}, {1, 0.0}, s);
+  return s.position[1].y() + drop + arm.y() + depth;
+}
+
+double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth, double turn) {
+  return lift_after_motion(shape, arm, depth, turn, 0.0);
 }
 
 }  // namespace
@@ -201,4 +207,26 @@ TEST_CASE("A position pass measures the overlap at the deepest points as their b
   // centre drops by sin 0.3 m, and so does its lowest point.
   CHECK(lift_after_turn(gp::Shape::circle(0.5, {1.0, 0.0}), {1.0, -0.5}, kDepth, -kTurn) ==
         Approx(0.2 * (kDepth + std::sin(kTurn))).epsilon(1e-12));
+}
+
+TEST_CASE("A position pass corrects a point apart at detection that its body's motion brought in",
+          "[via:DD:angDisp]") {
+  // The passes pass over a point whose overlap cannot have grown past the slop since detection,
+  // by how far its bodies moved and turned; these points were 1/64 m apart, and then their
+  // bodies turned or sank further than that.
+  constexpr double kGap = 1.0 / 64;  // m, exact as the float a contact point keeps
+  const gp::Vec2 corner{-0.5, -0.5};
+  const gp::Shape box = gp::Shape::box(1.0, 1.0);
+  // Turned by 0.3 rad, the corner is 0.5 (cos 0.3 + sin 0.3) − 0.5 = 0.125 m lower.
+  constexpr double kTurn = 0.3;
+  const double corner_drop = -(std::sin(kTurn) * corner.x() + std::cos(kTurn) * corner.y()) - 0.5;
+  CHECK(lift_after_motion(box, corner, -kGap, kTurn, 0.0) ==
+        Approx(0.2 * (corner_drop - kGap)).epsilon(1e-12));
+  // Lowered by 4/64 m, the corner overlaps by 3/64 m; lowered by 1/128 m, it is still apart.
+  CHECK(lift_after_motion(box, corner, -kGap, 0.0, 4 * kGap) ==
+        Approx(0.2 * 3 * kGap).epsilon(1e-12));
+  CHECK(lift_after_motion(box, corner, -kGap, 0.0, kGap / 2) == 0.0);
+  // A disc on its centre of mass lowered by 4/64 m: the same 3/64 m, turned or not.
+  CHECK(lift_after_motion(gp::Shape::circle(0.5), {0.0, -0.5}, -kGap, kTurn, 4 * kGap) ==
+        Approx(0.2 * 3 * kGap).epsilon(1e-12));
 }

@@ -52,13 +52,13 @@ void ContactSolver::move_by_impulses(StepContext& c) {
 
 void ContactSolver::solve_speculative(StepContext& c) {
   gp::solve_speculative(c, speculative_);
-  positions_.correct(c.speculative_contacts, c.shapes, c.inertia, c.start.angle,
+  positions_.correct(c.speculative_contacts, {c.shapes, c.inertia, c.start},
                      position_limits(c.settings), c.state);
   c.speculative_contacts.clear();
 }
 
 void ContactSolver::correct_positions(StepContext& c) {
-  positions_.correct(batches_, c.contacts, {c.shapes, c.inertia, c.start.angle},
+  positions_.correct(batches_, c.contacts, {c.shapes, c.inertia, c.start},
                      position_limits(c.settings), c.state);
 }
 

@@ -1,6 +1,8 @@
 #include "engine/solver/position_passes.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
@@ -38,6 +40,61 @@ struct Turns {
   }
   return turns;
 }
+
+// A bound [m] on the length of the arm the position passes place for body A's (`on_a`) or B's
+// deepest point of `p` as it turns with the body, which is +∞ for an offset disc's: the arm at
+// detection, t_arm n − n_arm t (arm_from), less half the depth along n; none for a centred disc's,
+// which stays along the normal whichever way the disc turns.
+double turning_arm_bound(AnchorKind kind, const ContactPointState& p, bool on_a) {
+  switch (kind) {
+    case AnchorKind::kCentredDisc:
+      return 0.0;
+    case AnchorKind::kFixed:
+      return on_a ? std::abs(p.tangent_arm_a) + std::abs(p.normal_arm_a) + std::abs(0.5 * p.depth)
+                  : std::abs(p.tangent_arm_b) + std::abs(p.normal_arm_b) + std::abs(0.5 * p.depth);
+    case AnchorKind::kOffsetDisc:
+      break;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// How far a contact's two bodies moved in `now` since `detected`, for telling the points that
+// surely overlap by no more than the slop: at detection the separation of a point's deepest points
+// was −depth, and since then it has fallen by no more than those points moved, each by at most
+// its body's displacement plus its turn times its arm, |(R(φ) − I) r| = 2 |sin(φ / 2)| |r| ≤
+// |φ| |r|.
+class MovedSinceDetection {
+ public:
+  MovedSinceDetection(const Contact& c, const MotionState& now, const MotionState& detected)
+      : centres_(travel(now, detected, c.body_a) + travel(now, detected, c.body_b)),
+        turn_a_(std::abs(now.angle[c.body_a] - detected.angle[c.body_a])),
+        turn_b_(std::abs(now.angle[c.body_b] - detected.angle[c.body_b])),
+        scale_(1.0 + extent(now.position[c.body_a]) + extent(now.position[c.body_b])) {}
+
+  // Whether point `p`, which the slop leaves `room` [m] to overlap more, surely still has room.
+  // The margin covers the round-off of the separation a pass computes (about 1e-16 of the
+  // positions and arms) and of its rotations (1e-13 rad) many times over.
+  [[gnu::always_inline]] bool within_slop(const ContactPointState& p, double room) const {
+    constexpr double kRoundOff = 1e-12;
+    const double left = room - centres_ - kRoundOff * scale_;
+    if (left < 0.0) return false;
+    const double arm_a = turning_arm_bound(p.anchor_a, p, true);
+    const double arm_b = turning_arm_bound(p.anchor_b, p, false);
+    return left - (turn_a_ + kRoundOff) * arm_a - (turn_b_ + kRoundOff) * arm_b >= 0.0;
+  }
+
+ private:
+  // The 1-norm [m] of a body's displacement, which is at least its length.
+  static double travel(const MotionState& now, const MotionState& detected, BodyId b) {
+    return extent(now.position[b] - detected.position[b]);
+  }
+  static double extent(const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); }
+
+  double centres_;  // m, both bodies' displacements
+  double turn_a_;   // rad
+  double turn_b_;
+  double scale_;  // m, of the positions, for the round-off
+};
 
 }  // namespace
 
@@ -102,14 +159,14 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
                                     MotionState& s) {
   const BodyShapes& shapes = geometry.shapes;
   const BodyInertia& inertia = geometry.inertia;
-  const std::span<const double> detected_angle = geometry.detected_angle;
+  const MotionState& detected = geometry.detected;
   RotationCache& rotations = rotations_;
   const double slop = limits.slop;
   int iterations = limits.iterations;
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   rotations.reset(s.angle.size());
-  const auto turn = [&](BodyId b) { return s.angle[b] - detected_angle[b]; };
+  const auto turn = [&](BodyId b) { return s.angle[b] - detected.angle[b]; };
   // The rotations of the bodies in contact that do not move, found before the passes: contacts
   // solved on different threads share them, and only read them then.
   for (const Contact& c : contacts) {
@@ -127,6 +184,12 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
       const Contact& c = contacts[i];
       bool contact_deep = false;
       for (const ContactPointState& p : contacts.points(c)) {
+        // Every point of a pile at rest is passed over here, where placing its anchors took 12%
+        // of the pile's step.
+        if (const double room = slop - static_cast<double>(p.depth);
+            room > 0.0 && MovedSinceDetection(c, s, detected).within_slop(p, room)) {
+          continue;
+        }
         // Each body's deepest point inside the other at detection, half the depth from the
         // contact point.
         const double half_depth = 0.5 * p.depth;
@@ -161,10 +224,9 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   }
 }
 
-void PositionCorrection::correct(const ContactSet& contacts, const BodyShapes& shapes,
-                                 const BodyInertia& inertia, std::span<const double> detected_angle,
+void PositionCorrection::correct(const ContactSet& contacts, const ContactGeometry& geometry,
                                  const PositionLimits& limits, MotionState& s) {
-  correct_in(ContactsInOrder(contacts), contacts, {shapes, inertia, detected_angle}, limits, s);
+  correct_in(ContactsInOrder(contacts), contacts, geometry, limits, s);
 }
 
 void PositionCorrection::correct(const ContactBatches& batches, const ContactSet& contacts,

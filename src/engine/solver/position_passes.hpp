@@ -72,12 +72,12 @@ struct PositionLimits {
   double slop;
 };
 
-/// What the position passes read of the bodies: their shapes, inertias, and angles [rad, by body
-/// id] when the contacts were found.
+/// What the position passes read of the bodies: their shapes, inertias, and their state when the
+/// contacts were found (positions [m] and angles [rad], by body id).
 struct ContactGeometry {
   const BodyShapes& shapes;
   const BodyInertia& inertia;
-  std::span<const double> detected_angle;
+  const MotionState& detected;
 };
 
 /// The position passes, with the rotations they turn bodies by kept between steps so that a step
@@ -88,11 +88,11 @@ class PositionCorrection {
   /// contact points overlap by more than `limits.slop` [m], removing a fifth of the excess per pass
   /// (Baumgarte's 0.2); they end after a pass that found no overlap deeper than two slops. The
   /// overlap is measured between each body's deepest point inside the other at detection, carried
-  /// along as the body moved and turned from `detected_angle` [rad, by body id], its angle when the
-  /// contacts were found.
-  void correct(const ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
-               std::span<const double> detected_angle, const PositionLimits& limits,
-               MotionState& s);
+  /// along as the body moved and turned from `geometry.detected`. A point whose overlap cannot
+  /// have grown past the slop since, by how far its bodies moved and turned, is passed over
+  /// without placing its deepest points: with the same result, as the pass would find no excess.
+  void correct(const ContactSet& contacts, const ContactGeometry& geometry,
+               const PositionLimits& limits, MotionState& s);
   /// correct in the order of `batches` of `contacts`, on the threads of the current task arena;
   /// the same result on any number of them.
   void correct(const ContactBatches& batches, const ContactSet& contacts,
