@@ -41,17 +41,17 @@ struct Turns {
   return turns;
 }
 
-// A bound [m] on the length of the arm the position passes place for body A's (`on_a`) or B's
-// deepest point of `p` as it turns with the body, which is +∞ for an offset disc's: the arm at
-// detection, t_arm n − n_arm t (arm_from), less half the depth along n; none for a centred disc's,
-// which stays along the normal whichever way the disc turns.
-double turning_arm_bound(AnchorKind kind, const ContactPointState& p, bool on_a) {
+// A bound [m] on the length of the arm the position passes place for one body's deepest point,
+// of kind `kind`, as it turns with the body, which is +∞ for an offset disc's: the arm at
+// detection, t_arm n − n_arm t (arm_from, with that body's `tangent_arm` and `normal_arm`), less
+// half the depth along n; none for a centred disc's, which stays along the normal whichever way
+// the disc turns.
+double turning_arm_bound(AnchorKind kind, double tangent_arm, double normal_arm, float depth) {
   switch (kind) {
     case AnchorKind::kCentredDisc:
       return 0.0;
     case AnchorKind::kFixed:
-      return on_a ? std::abs(p.tangent_arm_a) + std::abs(p.normal_arm_a) + std::abs(0.5 * p.depth)
-                  : std::abs(p.tangent_arm_b) + std::abs(p.normal_arm_b) + std::abs(0.5 * p.depth);
+      return std::abs(tangent_arm) + std::abs(normal_arm) + std::abs(0.5 * depth);
     case AnchorKind::kOffsetDisc:
       break;
   }
@@ -78,8 +78,8 @@ class MovedSinceDetection {
     constexpr double kRoundOff = 1e-12;
     const double left = room - centres_ - kRoundOff * scale_;
     if (left < 0.0) return false;
-    const double arm_a = turning_arm_bound(p.anchor_a, p, true);
-    const double arm_b = turning_arm_bound(p.anchor_b, p, false);
+    const double arm_a = turning_arm_bound(p.anchor_a, p.tangent_arm_a, p.normal_arm_a, p.depth);
+    const double arm_b = turning_arm_bound(p.anchor_b, p.tangent_arm_b, p.normal_arm_b, p.depth);
     return left - (turn_a_ + kRoundOff) * arm_a - (turn_b_ + kRoundOff) * arm_b >= 0.0;
   }
 
