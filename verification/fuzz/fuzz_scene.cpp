@@ -1,6 +1,6 @@
 // The libFuzzer target over the scene loader and a bounded run of the loaded scene (built only
-// with clang and GP_FUZZ=ON; ./test.sh runs it on 100,000 inputs). Any exception but InputError and
-// NumericalError escapes run_scene_input and libFuzzer reports it as a crash.
+// with clang and GP_FUZZ=ON; ./test.sh runs it on 2 × 50,000 inputs). Any exception but
+// InputError and NumericalError escapes run_scene_input and libFuzzer reports it as a crash.
 #include <cstddef>
 #include <cstdint>
 #include <string>
