@@ -67,11 +67,11 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
   for (const auto& [name, original] : scenes) {
     Scene scene = original;
     if (o.quick) scene.duration = std::min(scene.duration, 1.0);
+    if (o.progress) *o.progress << "  peers: " << name << "\n";
     const std::vector<double> times = output_instants(scene.duration, scene.dt);
     const auto reference = oracle_reference(list, name, scene, times, reference_options(scene));
     if (!reference) continue;
     const Trajectory& oracle = reference->trajectory;
-    if (o.progress) *o.progress << "  peers: " << name << "\n";
     const IntegratorKind own = scene.settings.integrator;
     const Differences ours = compare(run_engine(scene, own, scene.dt), oracle);
     const Scene alike = like_the_peers(scene);
