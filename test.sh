@@ -3,9 +3,9 @@
 # UndefinedBehaviorSanitizer, runs ctest, where any sanitizer report fails the run, prints the
 # gcovr summary and fails when line coverage of models/ plus src/ is under 90%; then builds the
 # libFuzzer target over the scene loader with clang in build-fuzz/ and fuzzes it with 2 × 50000
-# inputs on the two cores (about a minute), where a crash, a hang, a leak or a sanitizer report
-# fails the run (verification/fuzz/README.md). One build for coverage and the sanitizers rather than one each:
-# each build of every target took 9 to 15 minutes on 2 cores.
+# inputs on the two cores (1 to 2 min), where a crash, a hang, a leak or a sanitizer report fails
+# the run (verification/fuzz/README.md). One build for coverage and the sanitizers rather than one
+# each: each build of every target took 9 to 15 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")"
 ./tools/install-deps.sh
@@ -26,9 +26,9 @@ cmake --build build-fuzz --target gamephysics_fuzz_scene -j2
 mkdir -p build-fuzz/corpus build-fuzz/artifacts
 # Seeds: the bad inputs of the tests, the crash inputs found so far and the shipped scenes; new
 # inputs go to build-fuzz/corpus, a failing one to build-fuzz/artifacts/. Two fuzzers, one a core,
-# with fixed seeds and 50000 inputs each (66 and 74 s here), so that clean checkouts fuzz much the
-# same inputs (README); the time limit only guards against a much slower machine. Their logs are
-# long: the end of a failing one is printed, with the failure's report.
+# with fixed seeds and 50000 inputs each (99 s here, where one fuzzer's 100000 took 141 s), so
+# that clean checkouts fuzz much the same inputs (README); the time limit only guards against a
+# much slower machine. Their logs are long: the end of a failing one is printed, with its report.
 fuzz() {
   build-fuzz/bin/gamephysics_fuzz_scene -seed="$1" -runs=50000 -max_total_time=300 -timeout=5 \
     -rss_limit_mb=2048 -max_len=32768 -dict=verification/fuzz/scene.dict \
