@@ -75,7 +75,9 @@ std::vector<Check> pile_checks(const std::vector<NamedScene>& scenes, const Suit
   for (const auto& [name, original] : scenes) {
     if (!chaotic_pile(name)) continue;
     Scene scene = original;
-    if (o.quick) scene.duration = std::min(scene.duration, 1.0);
+    // A quick run judges nothing here (it has not settled) but runs both solvers through the
+    // first impacts: settle50's bottom row lands at 0.35 s.
+    if (o.quick) scene.duration = std::min(scene.duration, 0.5);
     if (o.progress) *o.progress << "  pile: " << name << "\n";
     const std::vector<double> times = output_instants(scene.duration, scene.output_dt);
     OracleOptions options;
