@@ -6,6 +6,7 @@
 #include <map>
 
 #include "verification/html/html_escape.hpp"
+#include "verification/markdown_cell.hpp"
 #include "verification/suite/report.hpp"
 #include "verification/suite/speed_report.hpp"
 
@@ -16,16 +17,6 @@ std::string figure(double value) {
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
 }
-
-namespace {
-
-std::string md_cell(const std::string& text) {
-  std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
-  return out;
-}
-
-}  // namespace
 
 ReportSummary summarise(const std::vector<Check>& checks) {
   ReportSummary s;
@@ -88,8 +79,8 @@ void write_report(const std::filesystem::path& out, const std::vector<Check>& ch
     }
     const std::string result =
         c.criterion == "reported" ? "reported" : (c.passed ? "PASS" : "FAIL");
-    md << "|" << md_cell(c.name) << "|" << c.srs_ids << "|" << md_cell(c.measured) << "|"
-       << md_cell(c.criterion) << "|" << result << "|\n";
+    md << "|" << markdown_cell(c.name) << "|" << c.srs_ids << "|" << markdown_cell(c.measured) << "|"
+       << markdown_cell(c.criterion) << "|" << result << "|\n";
     html << "<tr class=\"" << (c.passed ? "" : "fail") << "\"><td>" << html_escape(c.name)
          << "</td><td>" << html_escape(c.srs_ids) << "</td><td>" << html_escape(c.measured)
          << "</td><td>" << html_escape(c.criterion) << "</td><td>" << result << "</td></tr>";

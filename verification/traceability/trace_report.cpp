@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "verification/markdown_cell.hpp"
+
 namespace gp::verification {
 
 namespace {
@@ -83,13 +85,6 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
-// A Markdown table cell: a '|' inside it would end the cell.
-std::string md_cell(const std::string& text) {
-  std::string escaped;
-  for (char c : text) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
-  return escaped;
-}
-
 std::string status_name(EdgeStatus status) {
   switch (status) {
     case EdgeStatus::matched:
@@ -165,7 +160,7 @@ void add_dimensions(TraceFiles& files, const TraceInputs& in) {
     for (const auto& s : d.symbols)
       units += (units.empty() ? "" : " ") + s.symbol + "[" + s.unit + "]";
     const std::string result = d.consistent ? "consistent" : "INCONSISTENT";
-    md += "|" + d.id + "|" + d.form + "|`" + md_cell(d.equation) + "`|" + md_cell(units) + "|" +
+    md += "|" + d.id + "|" + d.form + "|`" + markdown_cell(d.equation) + "`|" + markdown_cell(units) + "|" +
           d.lhs_dimension + "|" + d.rhs_dimension + "|" + result + "|\n";
     csv += csv_field(d.id) + "," + csv_field(d.form) + "," + csv_field(d.equation) + "," +
            csv_field(units) + "," + csv_field(d.lhs_dimension) + "," + csv_field(d.rhs_dimension) +

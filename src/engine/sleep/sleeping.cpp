@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "engine/solver/contact_islands.hpp"
+
 namespace gp {
 
 void wake_island(StepContext& c, BodyId body) {
@@ -59,15 +61,6 @@ void hold_sleeping(StepContext& c) {
     c.state.angular_velocity[j] = 0.0;
   }
 }
-
-namespace {
-
-BodyId root_of(std::vector<BodyId>& parent, BodyId j) {
-  while (parent[j] != j) j = parent[j] = parent[parent[j]];
-  return j;
-}
-
-}  // namespace
 
 void fall_asleep(StepContext& c, SleepScratch& scratch) {
   const Settings& s = c.settings;

@@ -5,18 +5,6 @@
 
 namespace gp {
 
-namespace {
-
-BodyId root_of(std::vector<BodyId>& parent, BodyId body) {
-  while (parent[body] != body) {
-    parent[body] = parent[parent[body]];  // path halving keeps the trees flat
-    body = parent[body];
-  }
-  return body;
-}
-
-}  // namespace
-
 void ContactIslands::find(const ContactSet& contacts, const BodyInertia& inertia) {
   const std::size_t bodies = inertia.inverse_mass.size();
   parent.resize(bodies);

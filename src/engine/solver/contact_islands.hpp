@@ -15,6 +15,13 @@ inline bool movable(const BodyInertia& m, BodyId body) {
   return m.inverse_mass[body] > 0.0 || m.inverse_moment[body] > 0.0;
 }
 
+/// The root of `body`'s tree in the union-find forest `parent` (per body: its parent, a root
+/// its own), halving the path on the way so that the trees stay flat.
+inline BodyId root_of(std::vector<BodyId>& parent, BodyId body) {
+  while (parent[body] != body) body = parent[body] = parent[parent[body]];
+  return body;
+}
+
 /// The contacts grouped by island, each island's in the contacts' own order. An island is named
 /// by its root, its lowest body id; the arrays indexed by root are per body, and zero-sized
 /// islands are those of bodies that are not roots.

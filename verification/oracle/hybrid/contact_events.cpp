@@ -20,10 +20,6 @@ using verification::OracleEvent;
 
 namespace {
 
-Pose pose_of(const Motion& m) {
-  return {m.position, m.angle};
-}
-
 // The share of the kinetic energy an impact may gain by round-off of its impulses.
 constexpr double kEnergyRoundOff = 1e-10;
 

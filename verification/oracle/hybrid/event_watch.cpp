@@ -45,10 +45,6 @@ double half_thickness(const Hull& h) {
   return nearest + h.radius;
 }
 
-Pose pose_of(const Motion& m) {
-  return {m.position, m.angle};
-}
-
 // The kinematics of `c` if its first body's vertex were vertex `v` of its hull instead.
 ContactKinematics at_vertex(const World& world, ActiveContact c, int v, std::span<const Motion> m) {
   c.vertex = world.bodies[c.first].hulls[c.first_hull].vertices[static_cast<std::size_t>(v)];

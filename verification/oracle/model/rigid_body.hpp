@@ -25,6 +25,11 @@ struct Pose {
   double angle;   ///< ϕ [rad]
 };
 
+/// Where a body in motion `m` is.
+inline Pose pose_of(const Motion& m) {
+  return {m.position, m.angle};
+}
+
 /// A shape as the oracle sees it: the convex hull of 1..8 vertices in its body's centre-of-mass
 /// frame (same orientation as the body frame), swept by a disc of radius `radius`: disc = 1 vertex,
 /// capsule or bare segment = 2 vertices, polygon = 3..8 vertices counter-clockwise with radius 0.
