@@ -19,6 +19,7 @@ using gp::ShapePair;
 using gp::Vec2;
 
 namespace {
+namespace test_broadphase {
 
 /// Whether the broadphase should report proxies i < j: not both static, and their boxes, each
 /// fattened by half the margin, overlap.
@@ -88,8 +89,6 @@ std::vector<BroadphaseProxy> random_unit_boxes(std::uint32_t count, double width
   }
   return proxies;
 }
-
-}  // namespace
 
 TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 random boxes",
           "[FR:Determine-Collisions]") {
@@ -384,3 +383,6 @@ TEST_CASE("Sweep and prune released finds the pairs of all-pairs testing again",
   // Placed and sorted from scratch, as nothing was kept.
   CHECK(broadphase.entries_resorted() >= proxies.size());
 }
+
+}  // namespace test_broadphase
+}  // namespace

@@ -18,6 +18,7 @@ using gp::ShapePair;
 using gp::Vec2;
 
 namespace {
+namespace test_candidate_pairs {
 
 constexpr double kMargin = 0.02;
 
@@ -75,8 +76,6 @@ struct Pile {
       position[b] += Vec2(move(random), move(random));
   }
 };
-
-}  // namespace
 
 TEST_CASE("Pairs kept for a pile at rest are those of all-pairs testing at every call") {
   Pile pile(20, 10);
@@ -166,3 +165,6 @@ TEST_CASE("A box beyond a float's range leaves a pile's pairs to the broadphase"
     CHECK_FALSE(candidates.kept_pairs_used());
   }
 }
+
+}  // namespace test_candidate_pairs
+}  // namespace

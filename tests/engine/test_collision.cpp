@@ -19,6 +19,7 @@ using gp::Vec2;
 using gp::WorldShape;
 
 namespace {
+namespace test_collision {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -71,8 +72,6 @@ const Shape kUnitBox = Shape::box(1.0, 1.0);
 const Shape kGround = Shape::box(10.0, 1.0);
 // Top face of the ground at y = 0.
 const WorldShape kGroundPlaced = place(kGround, {0.0, -0.5});
-
-}  // namespace
 
 TEST_CASE("Two unit circles 1.5 apart overlap by 0.5 along the line of centres",
           "[FR:Determine-Collisions]") {
@@ -376,3 +375,6 @@ TEST_CASE("Contacts agree with the signed distance for random pairs of shapes",
   }
   CHECK(overlapping > 1000);
 }
+
+}  // namespace test_collision
+}  // namespace

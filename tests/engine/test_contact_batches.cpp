@@ -13,6 +13,7 @@
 #include "engine/solver/contact_batches.hpp"
 
 namespace {
+namespace test_contact_batches {
 
 // `bodies` unit bodies, body 0 static, body b at (b, 0), and one single-point contact per pair of
 // `links`.
@@ -74,8 +75,6 @@ std::vector<std::uint32_t> visits(const Graph& g,
   gp::ContactBatches batches;
   return visits(batches, g, splitting);
 }
-
-}  // namespace
 
 TEST_CASE("An island under the colouring threshold is visited in the contacts' own order") {
   const Graph g = chain(kColouredAbove);
@@ -253,3 +252,6 @@ TEST_CASE("A contact that gained a point since the last pass is counted in its i
   batches.build(two_points, kept(g), g.inertia, g.positions, {0, kColouredAbove});
   CHECK(batches.islands().points[1] == 4);
 }
+
+}  // namespace test_contact_batches
+}  // namespace

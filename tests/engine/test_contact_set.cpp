@@ -7,6 +7,9 @@
 
 #include "engine/solver/contact_set.hpp"
 
+namespace {
+namespace test_contact_set {
+
 TEST_CASE("reserve hands out the slots that appending one by one gives", "[contact_set]") {
   gp::ContactSet set;
   set.append(1);
@@ -67,3 +70,6 @@ TEST_CASE("erase_if keeps the others in order with their points", "[contact_set]
   CHECK(set.points(set[1])[0].normal_impulse == 3.0);
   CHECK(set.block(set[1]).k11 == 0.0);
 }
+
+}  // namespace test_contact_set
+}  // namespace

@@ -10,6 +10,7 @@
 #include "engine/solver/velocity_passes.hpp"
 
 namespace {
+namespace test_contact_solver {
 
 constexpr double kGravity = 9.81;
 constexpr double kStep = 1.0 / 60.0;
@@ -44,8 +45,6 @@ struct RestingBox {
     gp::prepare_contacts(contacts, shapes, inertia, before, kStep, gp::Settings{});
   }
 };
-
-}  // namespace
 
 TEST_CASE("A box on the ground is stopped in one pass, each corner carrying half its weight",
           "[via:GD:impulse]") {
@@ -152,8 +151,6 @@ TEST_CASE("Dropping contacts from a set keeps each remaining contact with its ow
   }
 }
 
-namespace {
-
 // A body (1) of 1 kg and 1 kg·m² touching static ground (0) along the normal +y at one point
 // overlapping by `depth`, its shape's deepest point found at `arm` from its centre of mass; the
 // body then turned by `turn` about its centre of mass and lowered by `drop` [m] before the
@@ -187,8 +184,6 @@ double lift_after_motion(const gp::Shape& shape, const gp::Vec2& arm, double dep
 double lift_after_turn(const gp::Shape& shape, const gp::Vec2& arm, double depth, double turn) {
   return lift_after_motion(shape, arm, depth, turn, 0.0);
 }
-
-}  // namespace
 
 TEST_CASE("A position pass measures the overlap at the deepest points as their bodies turned",
           "[via:DD:angDisp]") {
@@ -230,3 +225,6 @@ TEST_CASE("A position pass corrects a point apart at detection that its body's m
   CHECK(lift_after_motion(gp::Shape::circle(0.5), {0.0, -0.5}, -kGap, kTurn, 4 * kGap) ==
         Approx(0.2 * 3 * kGap).epsilon(1e-12));
 }
+
+}  // namespace test_contact_solver
+}  // namespace

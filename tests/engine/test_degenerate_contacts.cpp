@@ -15,6 +15,7 @@
 using gp::Vec2;
 
 namespace {
+namespace test_degenerate_contacts {
 
 constexpr double kDt = 1.0 / 60;
 constexpr double kRadius = 0.5;
@@ -76,8 +77,6 @@ bool all_finite(const gp::Space& space) {
   }
   return true;
 }
-
-}  // namespace
 
 TEST_CASE("Two equal discs touching at rest stay at rest",
           "[FR:Determine-Collision-Response-Over-Time]") {
@@ -143,3 +142,6 @@ TEST_CASE("Bodies started on top of each other are pushed apart without NaN or e
   const Vec2 normal{-std::sin(angle), std::cos(angle)};
   CHECK(std::abs(normal.dot(pa - pb)) >= 1.0 - 2.0 * space.settings().linear_slop);
 }
+
+}  // namespace test_degenerate_contacts
+}  // namespace

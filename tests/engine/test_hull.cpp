@@ -14,6 +14,7 @@
 #include "engine/geometry/world_shape.hpp"
 
 namespace {
+namespace test_hull {
 
 // max over the edges i of `reference` of min over the corners v of `other` of nᵢ·(v − vᵢ), the
 // first such edge on a tie, from the corners one after the other.
@@ -43,8 +44,6 @@ void check_same(const gp::WorldShape& a, const gp::WorldShape& b) {
           std::bit_cast<std::uint64_t>(expected.separation));
 }
 
-}  // namespace
-
 TEST_CASE("Two boxes' separation, edges two at a time, is its definition to the bit",
           "[FR:Determine-Collisions]") {
   std::mt19937_64 random(7);
@@ -64,3 +63,6 @@ TEST_CASE("Two boxes' separation, edges two at a time, is its definition to the 
     check_same(box(1.0, 1.0, offset, 0.0), box(1.0, 1.0, {0.0, 0.0}, 0.0));
   }
 }
+
+}  // namespace test_hull
+}  // namespace

@@ -2,6 +2,9 @@
 
 #include "scene/input_error.hpp"
 
+namespace {
+namespace test_input_error {
+
 TEST_CASE("An input error names the field, the rule and the value",
           "[FR:Verify-Physical_Constraints]") {
   const gp::InputError error("bodies[3].mass", "must be > 0 (SRS data constraint)", "-1");
@@ -10,3 +13,6 @@ TEST_CASE("An input error names the field, the rule and the value",
   CHECK(error.rule() == "must be > 0 (SRS data constraint)");
   CHECK(error.value() == "-1");
 }
+
+}  // namespace test_input_error
+}  // namespace

@@ -16,6 +16,7 @@
 using gp::Vec2;
 
 namespace {
+namespace test_island_solver {
 
 constexpr double kGravity = 9.81;
 constexpr double kStep = 1.0 / 60.0;
@@ -61,8 +62,6 @@ double largest_drift(const gp::Scene& scene, int steps) {
   }
   return largest;
 }
-
-}  // namespace
 
 TEST_CASE(
     "A column of ten boxes, a hundred times heavier at the top, stands and each contact "
@@ -239,3 +238,6 @@ TEST_CASE("A row of 40 boxes nudged without gravity is solved at rest and moves 
     CHECK(std::abs(space.state(id).velocity.y()) < 1e-12);
   }
 }
+
+}  // namespace test_island_solver
+}  // namespace

@@ -16,6 +16,7 @@ using Catch::Matchers::WithinAbs;
 using gp::Vec2;
 
 namespace {
+namespace test_local_impacts {
 
 gp::BodyDef wall(const std::string& name, const Vec2& a, const Vec2& b, double restitution) {
   gp::BodyDef def;
@@ -34,8 +35,6 @@ gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velo
   def.shapes.push_back({gp::Shape::circle(0.1), restitution, friction, 1.0});
   return def;
 }
-
-}  // namespace
 
 TEST_CASE("Two impacts in one step, a disc into a corner, follow the closed-form reflections",
           "[via:IM:col2D][FR:Determine-Collision-Response-Over-Time]") {
@@ -201,3 +200,6 @@ TEST_CASE("A step allocates nothing once the scene is warmed up", "[FR:Simulatio
   std::vector<double> grown(1000);
   CHECK(gp::test::allocations() > before);
 }
+
+}  // namespace test_local_impacts
+}  // namespace

@@ -11,6 +11,7 @@
 using gp::Vec2;
 
 namespace {
+namespace test_memory_per_body {
 
 gp::BodyDef box_of_walls() {
   gp::BodyDef def;
@@ -47,10 +48,11 @@ std::size_t settled_heap(int discs) {
   return gp::test::heap_in_use() - before;
 }
 
-}  // namespace
-
 TEST_CASE("A settled heap of discs holds at most 1 KiB of heap per disc", "[FR:Simulation-Space]") {
   const double per_body = static_cast<double>(settled_heap(600) - settled_heap(200)) / 400.0;
   INFO("heap per body: " << per_body << " B");
   CHECK(per_body <= 1024.0);
 }
+
+}  // namespace test_memory_per_body
+}  // namespace

@@ -7,6 +7,7 @@
 #include "engine/solver/normal_lcp.hpp"
 
 namespace {
+namespace test_normal_lcp {
 
 constexpr double kGravity = 9.81;
 constexpr double kStep = 1.0 / 60.0;
@@ -31,8 +32,6 @@ void check_complementary(const Matrix& k, const Eigen::VectorXd& w0, const Eigen
     CHECK(impulse(i) * w(i) <= 1e-10 * impulse_scale * speed_scale);
   }
 }
-
-}  // namespace
 
 TEST_CASE(
     "A column of bodies at rest is solved in one round, each contact carrying the weight "
@@ -302,3 +301,6 @@ TEST_CASE(
   const Eigen::VectorXd moved_plain = inverse_mass.asDiagonal() * (jacobian.transpose() * plain);
   CHECK((moved - moved_plain).cwiseAbs().maxCoeff() <= 1e-8 * kGravity * kStep);
 }
+
+}  // namespace test_normal_lcp
+}  // namespace

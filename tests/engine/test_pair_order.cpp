@@ -10,6 +10,9 @@
 
 using gp::ShapePair;
 
+namespace {
+namespace test_pair_order {
+
 TEST_CASE("Pair order sorts pairs by first id, then second, as a comparison sort does",
           "[FR:Determine-Collisions]") {
   std::mt19937 random(17);
@@ -45,3 +48,6 @@ TEST_CASE("Pair order keeps its buffers and handles no pairs", "[FR:Determine-Co
   CHECK(pairs == std::vector<ShapePair>{{0, 3}, {1, 2}, {1, 8}, {2, 5}});
   CHECK(pairs.data() == buffer);
 }
+
+}  // namespace test_pair_order
+}  // namespace

@@ -17,6 +17,7 @@ using gp::Shape;
 using gp::Vec2;
 
 namespace {
+namespace test_shape {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -29,8 +30,6 @@ void check_near(const Vec2& actual, const Vec2& expected, double tolerance = 1e-
 gp::ConvexPolygon polygon_of(const Shape& shape) {
   return std::get<gp::ConvexPolygon>(shape.geometry());
 }
-
-}  // namespace
 
 TEST_CASE("A unit square has area 1, centroid at its centre and polar moment 1/6",
           "[FR:Determine-Collisions]") {
@@ -346,3 +345,6 @@ TEST_CASE("Identical polygons added one after another share their vertices",
   CHECK(kept.bounds.max == fresh.bounds.max);
   CHECK(kept.bounds.min == Vec2(-0.5, -1.0));
 }
+
+}  // namespace test_shape
+}  // namespace

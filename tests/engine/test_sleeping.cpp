@@ -12,6 +12,7 @@ using Catch::Matchers::WithinAbs;
 using gp::Vec2;
 
 namespace {
+namespace test_sleeping {
 
 constexpr double g = 9.81;      // m/s²
 constexpr double kStep = 0.01;  // s
@@ -47,8 +48,6 @@ bool asleep(const gp::Space& space, gp::BodyId body) {
 void run(gp::Space& space, double seconds) {
   for (int k = 0; k < static_cast<int>(seconds / kStep + 0.5); ++k) space.step(kStep);
 }
-
-}  // namespace
 
 TEST_CASE("A box at rest falls asleep after time_to_sleep and is then held exactly still",
           "[FR:Simulation-Space]") {
@@ -139,3 +138,6 @@ TEST_CASE("A kinematic body moving into a sleeping island wakes it", "[FR:Simula
   // Pushed ahead of the paddle, which does not yield: at least its speed.
   CHECK(space.state(box).velocity.x() >= 2.0 - 1e-9);
 }
+
+}  // namespace test_sleeping
+}  // namespace

@@ -17,6 +17,7 @@ using Catch::Matchers::WithinRel;
 using gp::Vec2;
 
 namespace {
+namespace test_space_collisions {
 gp::BodyDef disc(const std::string& name, const Vec2& position, const Vec2& velocity,
                  double restitution, double radius = 0.5, double density = 1.0) {
   gp::BodyDef def;
@@ -46,7 +47,6 @@ Totals totals(const gp::Space& space) {
   }
   return t;
 }
-}  // namespace
 
 TEST_CASE("Head-on collisions: equal masses exchange velocities, C_R scales the rebound",
           "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D]") {
@@ -230,3 +230,6 @@ TEST_CASE("A Newton's cradle of touching balls passes the momentum to its last b
   CHECK_THAT(space.state(balls[4]).velocity.x(), WithinAbs(2.0, 2e-15));
   CHECK_THAT(space.state(balls[4]).position.x(), WithinAbs(3.0 + 2.0 / 60, 5e-15));
 }
+
+}  // namespace test_space_collisions
+}  // namespace

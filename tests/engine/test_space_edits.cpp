@@ -13,6 +13,7 @@ using Catch::Matchers::WithinAbs;
 using gp::Vec2;
 
 namespace {
+namespace test_space_edits {
 
 constexpr double g = 9.81;  // m/s²
 
@@ -67,8 +68,6 @@ std::string error_of(Change change) {
   }
   return "";
 }
-
-}  // namespace
 
 TEST_CASE("A set position and velocity, then free flight, follow the parabola",
           "[FR:Calculate-Translation-Over-Time][via:IM:transMot]") {
@@ -308,3 +307,6 @@ TEST_CASE("Bodies are found by name, the first added when names repeat", "[FR:Si
   space.remove_body(b);
   CHECK(space.find_body("b") == b2);
 }
+
+}  // namespace test_space_edits
+}  // namespace

@@ -11,6 +11,7 @@
 #include "gamephysics/gamephysics.hpp"
 
 namespace {
+namespace test_space_input {
 gp::BodyDef ball() {
   gp::BodyDef def;
   def.name = "ball";
@@ -30,7 +31,6 @@ gp::InputError error_of(const gp::BodyDef& def) {
   FAIL("no InputError");
   throw;
 }
-}  // namespace
 
 TEST_CASE("Each SRS data constraint on a body is checked with field, rule and value",
           "[FR:Verify-Physical_Constraints]") {
@@ -163,3 +163,6 @@ TEST_CASE("Orientations are reported in 0 ≤ ϕ < 2π",
     CHECK(space.state(id).angle < 2.0 * std::numbers::pi);
   }
 }
+
+}  // namespace test_space_input
+}  // namespace

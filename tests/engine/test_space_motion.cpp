@@ -12,9 +12,12 @@
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using gp::Vec2;
-constexpr double pi = std::numbers::pi;
 
 namespace {
+namespace test_space_motion {
+
+constexpr double pi = std::numbers::pi;
+
 gp::BodyDef point_mass(const Vec2& position, const Vec2& velocity, double mass = 56.2) {
   gp::BodyDef def;
   def.name = "p";
@@ -41,7 +44,6 @@ double projectile_error(gp::IntegratorKind kind, double dt) {
   }
   return worst;
 }
-}  // namespace
 
 TEST_CASE("Projectile: velocity Verlet and RK4 are exact under constant acceleration",
           "[FR:Calculate-Translation-Over-Time][via:IM:transMot]") {
@@ -193,3 +195,6 @@ TEST_CASE("The centre of mass of a body of several shapes is its reported positi
   CHECK_THAT(space.moment(scaled), WithinRel(28.0 * pi, 1e-15));
   CHECK_THAT((space.state(scaled).position - Vec2{4.0, 2.0}).norm(), WithinAbs(0.0, 1e-15));
 }
+
+}  // namespace test_space_motion
+}  // namespace

@@ -5,6 +5,7 @@
 #include "gamephysics/gamephysics.hpp"
 
 namespace {
+namespace test_space_pipeline {
 // The stage whose name starts with `name`, among those the space needs; nullptr if none.
 const gp::PipelineStage* needed(const std::vector<gp::PipelineStage>& stages,
                                 const std::string& name) {
@@ -28,7 +29,6 @@ gp::BodyDef disc(const std::string& name, const gp::Vec2& position) {
   def.shapes.push_back({gp::Shape::circle(0.5), 0.5});
   return def;
 }
-}  // namespace
 
 TEST_CASE("A free point mass under gravity runs no collision or rotation stage",
           "[FR:Simulation-Space]") {
@@ -122,3 +122,6 @@ TEST_CASE("The same scene gives bit-identical states every run", "[FR:Simulation
   };
   CHECK(run() == run());
 }
+
+}  // namespace test_space_pipeline
+}  // namespace

@@ -12,6 +12,7 @@ using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
 namespace {
+namespace test_space_surfaces {
 constexpr double g = 9.81;
 
 gp::Settings with_gravity() {
@@ -46,7 +47,6 @@ double sliding_distance(double friction_box, double friction_ground, double v0) 
   CHECK_THAT(space.state(id).position.y(), WithinAbs(0.5, 1e-15));     // and stayed on top
   return space.state(id).position.x();
 }
-}  // namespace
 
 TEST_CASE("Friction stops a sliding box after v₀² / (2 μ g)",
           "[FR:Input-Surface-Properties][FR:Determine-Collision-Response-Over-Time]") {
@@ -84,3 +84,6 @@ TEST_CASE("The bouncier surface sets the restitution of a contact",
   const double t_after = space.time() - space.impacts()[0].time;
   CHECK_THAT(space.state(id).velocity.y(), WithinAbs(0.9 * arrival - g * t_after, 2e-14));
 }
+
+}  // namespace test_space_surfaces
+}  // namespace

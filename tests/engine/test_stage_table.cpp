@@ -11,6 +11,7 @@
 #include "scene/scene.hpp"
 
 namespace {
+namespace test_stage_table {
 
 std::set<std::string> listed_for(const std::vector<gp::PipelineStage>& stages,
                                  const std::string& pass) {
@@ -20,8 +21,6 @@ std::set<std::string> listed_for(const std::vector<gp::PipelineStage>& stages,
   }
   return out;
 }
-
-}  // namespace
 
 TEST_CASE("The explanation lists exactly the stages each pass of a step executes, on every scene",
           "[FR:Simulation-Space]") {
@@ -107,3 +106,6 @@ TEST_CASE("Timed stages add up to no more than the steps' wall time, and untimed
   // The clock reads between the stages cost well under a tenth of a pile's step.
   CHECK(timed > 0.9 * wall);
 }
+
+}  // namespace test_stage_table
+}  // namespace

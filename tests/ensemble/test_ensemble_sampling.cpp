@@ -13,10 +13,11 @@
 #include "verification/ensemble/summary.hpp"
 #include "verification/ensemble/uncertainty.hpp"
 
+namespace {
+namespace test_ensemble_sampling {
+
 using namespace gp;
 using namespace gp::verification;
-
-namespace {
 
 Scene ball_scene() {
   Scene s = parse_scene(R"({"gravity": [0, -9.81], "dt": 0.01, "duration": 1, "bodies": [
@@ -26,8 +27,6 @@ Scene ball_scene() {
      "shapes": [{"type": "circle", "radius": 0.5, "restitution": 0.95, "friction": 0.3}]}]})");
   return s;
 }
-
-}  // namespace
 
 TEST_CASE("sample i's point depends on i and the seed alone", "[ensemble][sampler]") {
   for (Sampler sampler : {Sampler::Sobol, Sampler::Random}) {
@@ -152,3 +151,6 @@ TEST_CASE("an uncertainty file is checked like a scene file", "[ensemble][uncert
   CHECK(s.of("velocity") == 0.0);
   std::filesystem::remove(path);
 }
+
+}  // namespace test_ensemble_sampling
+}  // namespace

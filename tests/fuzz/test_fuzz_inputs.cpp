@@ -10,6 +10,7 @@
 #include "verification/fuzz/scene_input.hpp"
 
 namespace {
+namespace test_fuzz_inputs {
 
 const std::filesystem::path kFuzz = std::filesystem::path(GP_SOURCE_DIR) / "verification" / "fuzz";
 
@@ -34,8 +35,6 @@ int replay(const std::filesystem::path& folder) {
   return count;
 }
 
-}  // namespace
-
 TEST_CASE("Every seed of the fuzz corpus ends in the outcome its name gives",
           "[FR:Verify-Physical_Constraints]") {
   // The 64 bad inputs of test_scene_errors.cpp and the two of the command-line tests.
@@ -57,3 +56,6 @@ TEST_CASE("Every shipped scene loads and runs within the fuzzer's bounds",
     CHECK(gp::fuzz::run_scene_input(contents(entry.path())) == gp::fuzz::SceneInputOutcome::kRan);
   }
 }
+
+}  // namespace test_fuzz_inputs
+}  // namespace

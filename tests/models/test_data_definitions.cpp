@@ -12,6 +12,10 @@
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using gp::Vec2;
+
+namespace {
+namespace test_data_definitions {
+
 constexpr double pi = std::numbers::pi;
 
 TEST_CASE("Centre of mass of two particles and of a symmetric set", "[DD:ctrOfMass]") {
@@ -201,3 +205,6 @@ TEST_CASE("Potential energy: m g h, and energy is conserved in free fall",
     CHECK_THAT(e, WithinRel(e0, 1e-15));
   }
 }
+
+}  // namespace test_data_definitions
+}  // namespace

@@ -30,6 +30,7 @@ TEST_CASE("Gravitational field times mass equals the gravitational force",
 }
 
 namespace {
+namespace test_general_definitions {
 // Applies an impulse j n to A and −j n to B, as the impulse-momentum theorem prescribes; written
 // out here rather than through IM:col2D so that GD:impulse is checked on its own.
 struct Body {
@@ -45,7 +46,6 @@ void apply(Body& b, const Vec2& impulse) {
   b.v += impulse / b.m;
   b.w += (b.r.x() * impulse.y() - b.r.y() * impulse.x()) / b.I;
 }
-}  // namespace
 
 TEST_CASE("Collision impulse of a 1D head-on collision matches the closed form", "[GD:impulse]") {
   // 1D: j = (1 + C_R) m_A m_B / (m_A + m_B) · closing speed (Hibbeler, central impact).
@@ -73,3 +73,6 @@ TEST_CASE("Collision impulse with rotation obeys restitution and conserves momen
   CHECK_THAT(gp::dd::coefficient_of_restitution(vf, vi, n), WithinAbs(cr, 1e-13));
   CHECK_THAT((a.m * a.v + b.m * b.v - momentum_before).norm(), WithinAbs(0.0, 1e-13));
 }
+
+}  // namespace test_general_definitions
+}  // namespace

@@ -28,6 +28,7 @@ TEST_CASE("Angular acceleration: torque over moment, of either sign", "[IM:rotMo
 }
 
 namespace {
+namespace test_instance_models {
 struct Totals {
   Vec2 momentum;
   double angular_momentum;  // about the origin
@@ -46,7 +47,6 @@ Totals totals(const CollidingBody& a, const Vec2& ca, const CollidingBody& b, co
   body(b, cb, t);
   return t;
 }
-}  // namespace
 
 TEST_CASE("Elastic collision conserves momentum, angular momentum and energy with rotation",
           "[IM:col2D][GD:impulse][TM:NewtonThirdLawMot]") {
@@ -110,3 +110,6 @@ TEST_CASE("Separating bodies receive no impulse", "[IM:col2D]") {
   CHECK(r.velocity_a == a.velocity);
   CHECK(r.velocity_b == b.velocity);
 }
+
+}  // namespace test_instance_models
+}  // namespace

@@ -11,6 +11,9 @@ using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using gp::Vec2;
 
+namespace {
+namespace test_srs_as_written {
+
 TEST_CASE("SRS: IM:col2D as written doubles the kinetic energy of an elastic head-on hit",
           "[srs][IM:col2D][GD:impulse]") {
   // Equal masses, C_R = 1, A at rest, B approaching along n (from B towards A) at speed u. By hand:
@@ -93,3 +96,6 @@ TEST_CASE("SRS: τ = I α about an axis other than the centre of mass turns a bo
   // α = f / (2 m L), a rotation that does not happen.
   CHECK_THAT(alpha_about(end), WithinRel(f / (2.0 * m * L), 1e-15));
 }
+
+}  // namespace test_srs_as_written
+}  // namespace

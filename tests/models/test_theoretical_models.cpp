@@ -10,6 +10,9 @@ using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using gp::Vec2;
 
+namespace {
+namespace test_theoretical_models {
+
 TEST_CASE("Newton's second law gives a = F/m for the SRS's reasonable values",
           "[TM:NewtonSecLawMot]") {
   // Hand computation: 98.1 N / 56.2 kg = 1.745551601423488 m/s².
@@ -54,3 +57,6 @@ TEST_CASE("Newton's second law for rotation gives α = τ/I for the SRS's reason
              WithinRel(2.684563758389262, 1e-15));
   CHECK(gp::tm::angular_acceleration_from_torque(-200.0, 74.5) < 0.0);
 }
+
+}  // namespace test_theoretical_models
+}  // namespace

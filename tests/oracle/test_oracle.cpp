@@ -34,6 +34,7 @@ using gp::test::scene_of;
 using gp::test::with_gravity;
 
 namespace {
+namespace test_oracle {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
@@ -174,8 +175,6 @@ void check_agreement(const Scenario& scenario, double scale, double tolerance = 
     }
   }
 }
-
-}  // namespace
 
 TEST_CASE("Oracle: a projectile follows p0 + v0 t + g t^2 / 2",
           "[via:IM:transMot][via:DD:linDisp][via:DD:linVel][FR:Calculate-Translation-Over-Time]") {
@@ -613,3 +612,6 @@ TEST_CASE("Oracle: the trajectory CSV is simulate's format, the impact log one r
   CHECK(line.substr(line.find(',')) == ",a,b,-1,0,3.3333333333333335");
   CHECK_FALSE(std::getline(log, line));
 }
+
+}  // namespace test_oracle
+}  // namespace

@@ -54,6 +54,7 @@ TEST_CASE("Lemke's method satisfies complementarity on random positive semidefin
 }
 
 namespace {
+namespace test_oracle_contact_algebra {
 
 // A motion under constant accelerations, advanced by h exactly.
 Motion advanced(const Motion& m, const Vec2& a, double alpha, double h) {
@@ -85,8 +86,6 @@ void check_derivatives(const ActiveContact& c, const Motion& m1, const Motion& m
   CHECK((plus.slip - minus.slip) / (2 * h) == Approx(slip_rate).margin(1e-8));
 }
 
-}  // namespace
-
 TEST_CASE("a contact's gap and slip accelerations match finite differences of its motion",
           "[oracle][contact]") {
   std::mt19937 random(11);
@@ -113,3 +112,6 @@ TEST_CASE("a contact's gap and slip accelerations match finite differences of it
     check_derivatives(c, motion(), motion(), random);
   }
 }
+
+}  // namespace test_oracle_contact_algebra
+}  // namespace

@@ -17,6 +17,7 @@ using Kind = gp::oracle::Feature::Kind;
 namespace oracle = gp::oracle;
 
 namespace {
+namespace test_oracle_contact_cases {
 
 constexpr double kMargin = 0.02;  // m
 
@@ -27,8 +28,6 @@ oracle::Hull hull(const Shape& shape) {
 bool near(const Vec2& actual, const Vec2& expected) {
   return (actual - expected).norm() <= 1e-15;
 }
-
-}  // namespace
 
 TEST_CASE("Oracle contacts: cases worked by hand", "[oracle][geometry]") {
   SECTION("a 2 m box resting flat on a 4 m × 1 m box: two points at its bottom corners") {
@@ -122,3 +121,6 @@ TEST_CASE("Oracle contacts: cases worked by hand", "[oracle][geometry]") {
     CHECK(near(contact.normal, {1.0, 0.0}));
   }
 }
+
+}  // namespace test_oracle_contact_cases
+}  // namespace

@@ -25,6 +25,7 @@ using gp::test::check_near;
 using gp::test::with;
 
 namespace {
+namespace test_oracle_contact_scenes {
 
 constexpr double kDrift = 1e-12;  // m: how far an active contact may drift off its constraint
 constexpr double kG = 9.81;
@@ -60,8 +61,6 @@ void check_uniform_acceleration(const OracleResult& r, std::size_t body, const V
     check_near(s.velocity.y(), a * t * direction.y());
   }
 }
-
-}  // namespace
 
 TEST_CASE("oracle: a block slides down a 30-degree ramp at g (sin θ − μ cos θ)",
           "[oracle][contact]") {
@@ -249,8 +248,6 @@ TEST_CASE("oracle: CVODE and ARKODE agree to 1e-9 on every contact scene", "[ora
   }
 }
 
-namespace {
-
 // Equal discs (r = 0.5 m) in a hexagonal lattice filling a box of three static segments 5 m
 // wide: rows of five touching each other and both walls, alternating with rows of four nested
 // in them, every disc touching its neighbours. The contact forces are not unique (a row of five
@@ -271,8 +268,6 @@ gp::Scene jammed_lattice(int rows, double friction) {
   }
   return scene;
 }
-
-}  // namespace
 
 TEST_CASE("oracle: a jammed hexagonal lattice of equal discs stays at rest", "[oracle][contact]") {
   const double friction = GENERATE(0.0, 0.5);
@@ -332,3 +327,6 @@ TEST_CASE("oracle: a disc dropped into a pocket of a jammed lattice stops dead, 
   }
   CHECK(r.largest_drift <= kDrift);
 }
+
+}  // namespace test_oracle_contact_scenes
+}  // namespace

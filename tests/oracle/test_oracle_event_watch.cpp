@@ -20,6 +20,7 @@ using gp::Vec2;
 namespace oracle = gp::oracle;
 
 namespace {
+namespace test_oracle_event_watch {
 
 constexpr double kRadius = 0.1;  // m: the capsule's
 constexpr double kPi = std::numbers::pi;
@@ -57,8 +58,6 @@ CornerRoots corner_roots(const oracle::World& world, const oracle::ActiveContact
   }
   return least;
 }
-
-}  // namespace
 
 TEST_CASE("Oracle events: a corner-on-corner contact watches both corners' normal cones",
           "[oracle][events]") {
@@ -104,3 +103,6 @@ TEST_CASE("Oracle events: a corner-on-corner contact watches both corners' norma
   CHECK(after.second == Catch::Detail::Approx(std::sqrt(0.5)).epsilon(1e-12));
   CHECK(after.first == Catch::Detail::Approx(-std::sin(kPi / 12)).epsilon(1e-12));
 }
+
+}  // namespace test_oracle_event_watch
+}  // namespace

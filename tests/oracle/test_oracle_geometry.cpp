@@ -28,6 +28,7 @@ using gp::test::RandomKind;
 namespace oracle = gp::oracle;
 
 namespace {
+namespace test_oracle_geometry {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kMargin = 0.02;  // m: the engine's default contact margin (Settings)
@@ -277,8 +278,6 @@ void compare(const Pair& p, Disagreement& d) {
   }
 }
 
-}  // namespace
-
 TEST_CASE("Oracle geometry: signed distance and contact points agree with the engine's",
           "[oracle][geometry]") {
   std::mt19937_64 random(20261124);
@@ -310,3 +309,6 @@ TEST_CASE("Oracle geometry: signed distance and contact points agree with the en
     }
   }
 }
+
+}  // namespace test_oracle_geometry
+}  // namespace

@@ -18,6 +18,7 @@ using gp::oracle::Motion;
 using gp::oracle::World;
 
 namespace {
+namespace test_oracle_impacts {
 
 // A dynamic body of mass m and moment I at the origin's side, for contacts given by hand.
 gp::oracle::RigidBody body(double mass, double moment) {
@@ -68,8 +69,6 @@ std::vector<ContactKinematics> kinematics(const std::vector<ActiveContact>& cont
                                           const std::vector<Motion>& motions) {
   return gp::oracle::kinematics_of(contacts, motions);
 }
-
-}  // namespace
 
 TEST_CASE("oracle impacts: Newton's and Coulomb's laws hold at random simultaneous contacts",
           "[oracle][impacts]") {
@@ -153,3 +152,6 @@ TEST_CASE("oracle impacts: one frictionless contact is IM:col2D", "[oracle][impa
   CHECK(v[0].y() == Approx(-2.0 + j / 2.0).epsilon(1e-14));
   CHECK(omega[0] == Approx(1.5 + ca * j / 0.3).epsilon(1e-14));
 }
+
+}  // namespace test_oracle_impacts
+}  // namespace

@@ -25,6 +25,7 @@ using gp::verification::run_oracle;
 using gp::test::with;
 
 namespace {
+namespace test_oracle_lift_off {
 
 constexpr double kG = 9.81;
 constexpr double kRadius = 0.5;
@@ -41,8 +42,6 @@ gp::Scene three_discs() {
 
 constexpr std::size_t kRight = 2;
 constexpr std::size_t kTop = 3;
-
-}  // namespace
 
 TEST_CASE("oracle: a box leaving a step's corner never gains energy", "[oracle][contact]") {
   // step_tip has no impact: the box turns about the corner, slips, and lets go. With a static
@@ -165,3 +164,6 @@ TEST_CASE("oracle: an active contact that pulls is an error, never silent", "[or
     }
   }
 }
+
+}  // namespace test_oracle_lift_off
+}  // namespace

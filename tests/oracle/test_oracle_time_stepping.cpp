@@ -20,6 +20,7 @@ using gp::verification::OracleResult;
 using gp::verification::run_oracle;
 
 namespace {
+namespace test_oracle_time_stepping {
 
 constexpr double kG = 9.81;
 constexpr double kRadius = 0.5;
@@ -57,8 +58,6 @@ double largest_position_difference(const OracleResult& a, const OracleResult& b)
   }
   return d;
 }
-
-}  // namespace
 
 TEST_CASE("oracle time-stepping: a disc dropped with C_R = 0 rests on the ground, first order",
           "[oracle][stepping]") {
@@ -137,3 +136,6 @@ TEST_CASE(
   CHECK(order >= 0.9);
   CHECK(order <= 1.1);
 }
+
+}  // namespace test_oracle_time_stepping
+}  // namespace

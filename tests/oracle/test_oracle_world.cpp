@@ -21,6 +21,7 @@ using gp::Vec2;
 namespace oracle = gp::oracle;
 
 namespace {
+namespace test_oracle_world {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -51,8 +52,6 @@ Accelerations accelerations(const oracle::World& world, std::vector<oracle::Moti
   oracle::applied_accelerations(world, motion, a.linear, a.angular);
   return a;
 }
-
-}  // namespace
 
 TEST_CASE("Oracle world: a body's position is its centre of mass, as the engine reports it",
           "[oracle][model]") {
@@ -154,3 +153,6 @@ TEST_CASE("Oracle world: applied accelerations against closed forms", "[oracle][
     CHECK(a.linear[2] == Vec2::Zero());
   }
 }
+
+}  // namespace test_oracle_world
+}  // namespace

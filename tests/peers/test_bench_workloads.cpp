@@ -9,6 +9,7 @@
 #include "verification/bench/workloads.hpp"
 
 namespace {
+namespace test_bench_workloads {
 
 bool same_shape(const gp::Shape& a, const gp::Shape& b) {
   if (a.kind() != b.kind()) return false;
@@ -20,8 +21,6 @@ bool same_shape(const gp::Shape& a, const gp::Shape& b) {
   const auto* t = std::get_if<gp::Segment>(&b.geometry());
   return s && t && s->a == t->a && s->b == t->b && s->radius == t->radius;
 }
-
-}  // namespace
 
 TEST_CASE("rain built in code is scenes/rain1000.json to the last bit", "[NFR:Performance]") {
   const gp::Scene file = gp::load_scene(std::string(GP_SOURCE_DIR) + "/scenes/rain1000.json");
@@ -149,3 +148,6 @@ TEST_CASE("The summary gives each engine's heap per disc added from rain1000 to 
   gp::bench::print_summary(out, all);
   CHECK_THAT(out.str(), Catch::Contains("rain4000 (held at the end of the run): ours 1000 B\n"));
 }
+
+}  // namespace test_bench_workloads
+}  // namespace

@@ -11,6 +11,9 @@ using gp::peers::testing::box_body;
 using gp::peers::testing::empty_scene;
 using gp::peers::testing::floor_box;
 
+namespace {
+namespace test_peer_collisions {
+
 TEST_CASE("A head-on elastic collision of equal masses exchanges velocities in both peers",
           "[NFR:Correctness][peers]") {
   // One surface is elastic, the other not: our rule takes the larger C_R (1), where Chipmunk's
@@ -73,3 +76,6 @@ TEST_CASE("Box2D keeps a plank exactly two skins thick whole: it rests grown by 
   CHECK_THAT(world->state(1).position.y(), WithinAbs(0.015, 1e-3));
   CHECK_THAT(world->state(1).velocity.y(), WithinAbs(0.0, 1e-3));
 }
+
+}  // namespace test_peer_collisions
+}  // namespace

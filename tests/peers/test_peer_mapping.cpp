@@ -15,6 +15,7 @@ using Catch::Matchers::WithinRel;
 using gp::Vec2;
 
 namespace {
+namespace test_peer_mapping {
 
 // A right triangle (legs 3 m and 1.5 m, centroid (1, 0.5) off the body origin), density
 // 2 kg/m², at (1, 2) turned by 0.3 rad and spinning at 2 rad/s: m = 4.5 kg, centre of mass at
@@ -40,8 +41,6 @@ constexpr double kMass = 4.5, kMoment = 4.5 * (9.0 + 2.25) / 18.0;
 void visit_shape(cpBody*, cpShape* shape, void* out) {
   *static_cast<cpShape**>(out) = shape;
 }
-
-}  // namespace
 
 TEST_CASE("Chipmunk2D gets our mass, moment and centre of mass of an off-centre polygon",
           "[NFR:Correctness][peers]") {
@@ -108,3 +107,6 @@ TEST_CASE("An off-centre polygon spins about our centre of mass in both peers",
     CHECK_THAT(s.angle, WithinAbs(0.3 + 2.0, 1e-5));
   }
 }
+
+}  // namespace test_peer_mapping
+}  // namespace

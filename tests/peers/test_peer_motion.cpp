@@ -11,6 +11,7 @@ using gp::peers::PeerEngine;
 using gp::peers::testing::empty_scene;
 
 namespace {
+namespace test_peer_motion {
 
 constexpr double h = 0.01;  // s
 constexpr int steps = 200;
@@ -29,8 +30,6 @@ std::unique_ptr<gp::peers::PeerWorld> projectile(PeerEngine engine) {
   for (int n = 0; n < steps; ++n) world->step(h);
   return world;
 }
-
-}  // namespace
 
 TEST_CASE("Chipmunk2D moves a projectile as position-first symplectic Euler to 1e-12 m",
           "[NFR:Correctness][peers]") {
@@ -118,3 +117,6 @@ TEST_CASE("Peer engines are named chipmunk and box2d, their configurations defau
   }
   CHECK_FALSE(gp::peers::config_from_name("release"));
 }
+
+}  // namespace test_peer_motion
+}  // namespace

@@ -13,6 +13,7 @@ using Catch::Matchers::WithinAbs;
 using gp::peers::PeerEngine;
 
 namespace {
+namespace test_peer_run {
 
 /// A kinematic box turning clockwise over a static floor, and a ball dropped beside it.
 gp::Scene mixed_scene() {
@@ -34,8 +35,6 @@ gp::Scene mixed_scene() {
   scene.bodies = {floor, spinner, gp::peers::testing::ball("ball", {2.0, 3.0}, {0, 0}, 1.0, 0)};
   return scene;
 }
-
-}  // namespace
 
 TEST_CASE("A peer run stops on every output instant and writes the trajectory CSV",
           "[NFR:Correctness][peers]") {
@@ -109,3 +108,6 @@ TEST_CASE("Peers are given our mass setup: infinite mass for static and kinemati
   CHECK_THAT(peer.bodies[2].moment, WithinAbs(0.125, 1e-15));
   CHECK(peer.bodies[1].start.angular_velocity == -1.0);
 }
+
+}  // namespace test_peer_run
+}  // namespace

@@ -8,6 +8,7 @@
 #include "scene_files.hpp"
 
 namespace {
+namespace test_run {
 
 std::vector<double> instants(double duration, double output_dt) {
   const gp::OutputTimes times(duration, output_dt);
@@ -15,8 +16,6 @@ std::vector<double> instants(double duration, double output_dt) {
   for (std::size_t k = 0; k < times.size(); ++k) result.push_back(times[k]);
   return result;
 }
-
-}  // namespace
 
 TEST_CASE("Output instants are k * output_dt and the final time", "[FR:Simulation-Space]") {
   CHECK(instants(1.0, 0.25) == std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0});
@@ -73,3 +72,6 @@ TEST_CASE("A scene of duration 0 reports its initial state only", "[FR:Simulatio
   CHECK(calls == 1);
   CHECK(space->time() == 0.0);
 }
+
+}  // namespace test_run
+}  // namespace

@@ -9,6 +9,7 @@ using gp::test::input_error;
 using gp::test::scene_with;
 
 namespace {
+namespace test_scene_errors {
 
 void check_error(const std::string& json, const std::string& field, const std::string& rule,
                  const std::string& value, const gp::SceneOverrides& overrides = {}) {
@@ -21,8 +22,6 @@ void check_error(const std::string& json, const std::string& field, const std::s
 }
 
 const std::string kBall = R"("shapes": [{"type": "circle", "radius": 0.5}])";
-
-}  // namespace
 
 TEST_CASE("Malformed JSON is reported at its line and column", "[FR:Verify-Physical_Constraints]") {
   check_error("{\"dt\": 0.01,\n \"duration\": }", "line 2, column 14", "must be valid JSON",
@@ -333,3 +332,6 @@ TEST_CASE("Overrides are checked like the file's values", "[FR:Verify-Physical_C
   overrides.duration = std::numeric_limits<double>::infinity();
   check_error(scene_with(""), "duration", "must be a finite number >= 0", "inf", overrides);
 }
+
+}  // namespace test_scene_errors
+}  // namespace

@@ -9,6 +9,9 @@
 using gp::test::load;
 using gp::test::scene_with;
 
+namespace {
+namespace test_scene_loading {
+
 TEST_CASE("Settings and time stepping are read from the file", "[FR:Input-Initial-Conditions]") {
   const gp::Scene scene = load(R"({"gravity": [0.5, -9.81], "G": 6.674e-11,
       "integrator": "rk4", "dt": 0.002, "duration": 3, "output_dt": 0.1,
@@ -167,3 +170,6 @@ TEST_CASE("The space has the scene's bodies in file order", "[FR:Input-Initial-C
   CHECK(space->state(1).velocity == gp::Vec2(1, 0));
   CHECK(space->mass(1) == Approx(2 * 3.141592653589793 * 0.25));
 }
+
+}  // namespace test_scene_loading
+}  // namespace

@@ -10,6 +10,7 @@
 #include "scene/scene.hpp"
 
 namespace {
+namespace test_shipped_scenes {
 
 const std::filesystem::path kScenes = std::filesystem::path(GP_SOURCE_DIR) / "scenes";
 
@@ -25,8 +26,6 @@ Run run(const std::string& name, const gp::SceneOverrides& overrides = {}) {
   gp::run_scene(*result.space, result.scene, [](double) {});
   return result;
 }
-
-}  // namespace
 
 TEST_CASE("Every shipped scene loads and builds", "[FR:Input-Initial-Conditions]") {
   std::set<std::string> names;
@@ -147,3 +146,6 @@ TEST_CASE("pyramid20.json stands", "[FR:Determine-Collision-Response-Over-Time]"
     CHECK((space->state(box).position - start[box]).norm() < 0.05);
   }
 }
+
+}  // namespace test_shipped_scenes
+}  // namespace

@@ -12,6 +12,7 @@
 #include "scene_files.hpp"
 
 namespace {
+namespace test_trajectory {
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> fields;
@@ -33,8 +34,6 @@ const std::string kScene = R"({"gravity": [0.3, -9.81], "dt": 0.01, "duration": 
     {"name": "spinner", "position": [0.1, 0.2], "angle": 6.2, "velocity": [1.1, 2.3],
      "angular_velocity": 3.7, "shapes": [{"type": "box", "width": 0.3, "height": 0.7}]},
     {"name": "dot", "position": [-1, 1], "velocity": [-0.7, 0.1], "mass": 2}]})";
-
-}  // namespace
 
 TEST_CASE("The trajectory reads back to the engine's state, to the bit",
           "[FR:Calculate-Translation-Over-Time][FR:Calculate-Rotation-Over-Time]") {
@@ -87,3 +86,6 @@ TEST_CASE("Numbers are written with 17 significant digits",
         "t,body,x,y,angle,vx,vy,omega\n"
         "0.33333333333333331,third,0.10000000000000001,0.30000000000000004,0,0,0,0\n");
 }
+
+}  // namespace test_trajectory
+}  // namespace

@@ -9,6 +9,9 @@
 #include "verification/audit/katex_inline.hpp"
 #include "verification/traceability/test_results.hpp"
 
+namespace {
+namespace test_audit_page_inputs {
+
 TEST_CASE("base64 gives the test vectors of RFC 4648") {
   using gp::verification::base64;
   CHECK(base64("") == "");
@@ -50,3 +53,6 @@ TEST_CASE("A report without test cases, or no report, is an error") {
   std::filesystem::remove(file);
   CHECK_THROWS_WITH(gp::verification::load_test_results(file), Catch::Contains("cannot read"));
 }
+
+}  // namespace test_audit_page_inputs
+}  // namespace

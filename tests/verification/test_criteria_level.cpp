@@ -6,6 +6,9 @@
 
 using gp::verification::CheckList;
 
+namespace {
+namespace test_criteria_level {
+
 TEST_CASE("verify: a limit more than 10x above its figure needs a reason", "[verify]") {
   CheckList list("test");
   list.within("tight", "", "3e-9 m", "≤ 1e-8 m", {{3e-9, 1e-8}});
@@ -35,3 +38,6 @@ TEST_CASE("verify: a limit more than 10x above its figure needs a reason", "[ver
   quick.quick = true;
   CHECK(gp::verification::criteria_level_checks(rows, quick)[0].passed);
 }
+
+}  // namespace test_criteria_level
+}  // namespace

@@ -9,6 +9,9 @@
 #include "verification/dimensions/si_quantities.hpp"
 #include "verification/dimensions/unit_vector.hpp"
 
+namespace {
+namespace test_dimensional_audit {
+
 TEST_CASE("Dimensional audit finds exactly the SRS's dimensional errors", "[dimensions]") {
   std::set<std::string> failing, written, code_failing;
   for (const auto& check : gp::verification::dimensional_audit()) {
@@ -82,3 +85,6 @@ TEST_CASE("A model function gives the same numbers with units as with doubles", 
   CHECK(with_units.angular_velocity_a.value() == with_doubles.angular_velocity_a);
   CHECK(with_units.angular_velocity_b.value() == with_doubles.angular_velocity_b);
 }
+
+}  // namespace test_dimensional_audit
+}  // namespace

@@ -10,10 +10,10 @@
 using gp::Vec2;
 
 namespace {
+namespace test_long_run {
 gp::Scene rain() {
   return gp::load_scene(std::filesystem::path(GP_SOURCE_DIR) / "scenes" / "rain1000.json");
 }
-}  // namespace
 
 TEST_CASE("The box of rain1000 is its three walls and its highest ball widened by 1 m",
           "[NFR:Correctness]") {
@@ -63,3 +63,6 @@ TEST_CASE("Memory growth is counted from the first tenth of a run", "[NFR:Perfor
   // The sample at step 100 (a tenth of 1000) is the baseline: 32.5 − 31.0.
   CHECK(result.memory_growth_mib() == Approx(1.5));
 }
+
+}  // namespace test_long_run
+}  // namespace

@@ -9,6 +9,7 @@
 #include "verification/suite/suite.hpp"
 
 namespace {
+namespace test_oracle_domain {
 
 gp::Scene shipped(const std::string& name) {
   return gp::load_scene(std::string(GP_SOURCE_DIR) + "/scenes/" + name + ".json");
@@ -17,8 +18,6 @@ gp::Scene shipped(const std::string& name) {
 std::vector<double> first_second() {
   return {0.0, 0.5, 1.0};
 }
-
-}  // namespace
 
 using gp::verification::CheckList;
 using gp::verification::oracle_reference;
@@ -95,3 +94,6 @@ TEST_CASE("verify: every hard case is compared with the oracle or declared outsi
   CHECK(compared == 12);
   CHECK(declared == 1);
 }
+
+}  // namespace test_oracle_domain
+}  // namespace

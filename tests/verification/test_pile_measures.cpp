@@ -5,6 +5,7 @@
 #include "verification/suite/pile_measures.hpp"
 
 namespace {
+namespace test_pile_measures {
 
 constexpr double kG = 9.81;
 
@@ -30,8 +31,6 @@ gp::Scene two_discs() {
 gp::BodyState at(double y, gp::Vec2 velocity = gp::Vec2::Zero(), double omega = 0.0) {
   return {{0.0, y}, 0.0, velocity, omega};
 }
-
-}  // namespace
 
 TEST_CASE("pile measures: energy, time to settle and profile of a run worked by hand",
           "[verify][pile]") {
@@ -64,3 +63,6 @@ TEST_CASE("pile measures: energy, time to settle and profile of a run worked by 
   CHECK(d.settle_time == 2.0);  // its kinetic energy never reaches the threshold: 0 s
   CHECK(d.profile == Approx(0.25));
 }
+
+}  // namespace test_pile_measures
+}  // namespace

@@ -8,6 +8,7 @@
 #include "verification/suite/speed_table.hpp"
 
 namespace {
+namespace test_speed_table {
 
 using Cells = std::vector<std::string>;
 
@@ -28,8 +29,6 @@ gp::verification::SpeedTable fake_table() {
   table.measured_at = "2026-11-22T14:00:00Z";
   return table;
 }
-
-}  // namespace
 
 TEST_CASE("The speed table gives medians, spreads and ratios of the given timings",
           "[NFR:Performance]") {
@@ -89,3 +88,6 @@ TEST_CASE("The report shows the speed table, or says that --quick skipped it",
   CHECK_THAT(gp::verification::speed_markdown(skipped),
              Catch::Contains("## speed against the peers") && Catch::Contains("--quick"));
 }
+
+}  // namespace test_speed_table
+}  // namespace

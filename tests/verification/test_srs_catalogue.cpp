@@ -6,6 +6,7 @@
 #include "verification/srs/catalog.hpp"
 
 namespace {
+namespace test_srs_catalogue {
 const gp::verification::Catalog& catalog() {
   static const auto c = gp::verification::load_catalog(GP_SOURCE_DIR "/srs/catalog.json");
   return c;
@@ -26,7 +27,6 @@ std::string text_of(const std::vector<gp::verification::Item>& items, const std:
   }
   return "";
 }
-}  // namespace
 
 TEST_CASE("Catalogue holds every item of the SRS", "[srs]") {
   const auto& c = catalog();
@@ -156,7 +156,6 @@ TEST_CASE("SRS: names and descriptions with slips", "[srs]") {
   CHECK(t_c);  // rendered by the SRS as "is the denotes the time at collision"
 }
 
-namespace {
 std::string description_of(const std::string& id, const std::string& symbol) {
   for (const auto& s : model(id).at("symbols")) {
     if (s.at("symbol") == symbol) return s.at("description");
@@ -170,7 +169,6 @@ bool traced(const std::vector<gp::verification::Edge>& edges, const std::string&
   }
   return false;
 }
-}  // namespace
 
 TEST_CASE("SRS: j is the impulse and the index of a body", "[srs]") {
   CHECK(description_of("GD:impulse", "j") == "impulse (scalar)");
@@ -260,3 +258,6 @@ TEST_CASE("SRS: notes and descriptions that name the wrong quantity", "[srs]") {
   CHECK_THAT(model("DD:chaslesThm").at("notes").at(0).get<std::string>(),
              Catch::Contains("at the origin (axis of rotation)"));
 }
+
+}  // namespace test_srs_catalogue
+}  // namespace

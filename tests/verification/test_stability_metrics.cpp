@@ -8,6 +8,7 @@
 #include "verification/suite/stability_metrics.hpp"
 
 namespace {
+namespace test_stability_metrics {
 
 using gp::BodyState;
 using gp::BodyType;
@@ -26,8 +27,6 @@ BodyState at(const Vec2& position, double angle = 0.0, const Vec2& velocity = Ve
 
 const Shape kUnitBox = Shape::box(1.0, 1.0);
 const Shape kDisc = Shape::circle(0.5);
-
-}  // namespace
 
 using gp::verification::kinetic_energy;
 using gp::verification::largest_drift;
@@ -88,3 +87,6 @@ TEST_CASE("kinetic_energy: ½ m v² + ½ I ω² summed over the dynamic bodies",
                        {at({0, 0}, 0, {3, 4}, 2), at({0, 0}, 0, {0, 5}, 0), at({0, 0})}) ==
         Approx(51.0).epsilon(1e-15));
 }
+
+}  // namespace test_stability_metrics
+}  // namespace

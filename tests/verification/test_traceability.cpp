@@ -8,9 +8,11 @@
 #include "verification/traceability/test_calls.hpp"
 #include "verification/traceability/trace_report.hpp"
 
+namespace {
+namespace test_traceability {
+
 using namespace gp::verification;
 
-namespace {
 const TraceInputs& repository() {
   static const auto inputs = gather_trace_inputs(GP_SOURCE_DIR);
   return inputs;
@@ -19,7 +21,6 @@ bool reports(const TraceResult& result, const std::string& text) {
   return std::any_of(result.problems.begin(), result.problems.end(),
                      [&](const std::string& p) { return p.find(text) != std::string::npos; });
 }
-}  // namespace
 
 TEST_CASE("Traceability: every model has a function and a test, every difference an erratum",
           "[traceability]") {
@@ -191,3 +192,6 @@ TEST_CASE("README names the function and file of every SRS model", "[traceabilit
     CHECK(readme.find("| " + r.id + " | `" + r.function + "` |") != std::string::npos);
   }
 }
+
+}  // namespace test_traceability
+}  // namespace

@@ -9,6 +9,7 @@
 #include "verification/viewer/recording.hpp"
 
 namespace {
+namespace test_recording {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -24,8 +25,6 @@ Recorded record(const std::string& file, const gp::SceneOverrides& overrides = {
   r.recording = gp::verification::record_run(*r.space, r.scene);
   return r;
 }
-
-}  // namespace
 
 TEST_CASE("The viewer's energies of the bouncing ball are the hand-computed ones",
           "[via:DD:kEnergy][via:DD:potEnergy]") {
@@ -90,3 +89,6 @@ TEST_CASE("The viewer's rotational energy of the spinning box is I omega squared
     CHECK(f.totals.angular_momentum == Approx(I * omega).margin(1e-12));
   }
 }
+
+}  // namespace test_recording
+}  // namespace

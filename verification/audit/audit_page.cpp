@@ -127,7 +127,7 @@ std::string dimensions_table(const TraceInputs& in, const std::string& id) {
   return html.empty() ? html : html + "</table>";
 }
 
-std::string function_of(const TraceInputs& in, const std::string& id) {
+std::string functions_paragraph(const TraceInputs& in, const std::string& id) {
   std::string html;
   for (const auto& r : in.registrations) {
     if (r.id != id) continue;
@@ -158,7 +158,7 @@ std::string model_section(const TraceInputs& in, const AuditEvidence& evidence, 
     for (const auto& u : entry["uses"]) uses += (uses.empty() ? "" : ", ") + u.get<std::string>();
     html += "<p>The SRS says it uses: " + html_escape(uses) + "</p>";
   }
-  html += function_of(in, m.id) + tests_list(in, evidence, m.id) +
+  html += functions_paragraph(in, m.id) + tests_list(in, evidence, m.id) +
           check_table(evidence.checks, m.id) + dimensions_table(in, m.id) + errata_list(in, m.id);
   return html + "</section>";
 }

@@ -26,10 +26,10 @@ namespace {
 
 // Pairs a thread takes at a time: a manifold costs about a hundred nanoseconds, a task about a
 // microsecond to hand out.
-constexpr std::size_t kPairsPerTask = 256;
+constexpr std::size_t kCollidedPairsPerTask = 256;
 // Pairs whose manifolds are found side by side before they are appended: a block's slots take
 // 560 kB.
-constexpr std::size_t kPairsPerBlock = 16 * kPairsPerTask;
+constexpr std::size_t kCollidedPairsPerBlock = 16 * kCollidedPairsPerTask;
 
 AnchorKind anchor_kind(const ShapeRecord& shape) {
   if (shape.centred_disc()) return AnchorKind::kCentredDisc;
@@ -112,15 +112,15 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   // On several threads, a block of pairs at a time (so that the slots take a fixed room rather
   // than room per body): each pair's manifold into its own slot, the contacts appended in the
   // pairs' order, so that they do not depend on the number of threads, and then filled in.
-  manifolds_.resize(kPairsPerBlock);
-  counts_.resize(kPairsPerBlock);
-  slots_.resize(kPairsPerBlock);
-  warm_start_of_.resize(kPairsPerBlock);
+  manifolds_.resize(kCollidedPairsPerBlock);
+  counts_.resize(kCollidedPairsPerBlock);
+  slots_.resize(kCollidedPairsPerBlock);
+  warm_start_of_.resize(kCollidedPairsPerBlock);
   auto old = previous.begin();
-  for (std::size_t first = 0; first < pairs.size(); first += kPairsPerBlock) {
-    const std::size_t size = std::min(kPairsPerBlock, pairs.size() - first);
+  for (std::size_t first = 0; first < pairs.size(); first += kCollidedPairsPerBlock) {
+    const std::size_t size = std::min(kCollidedPairsPerBlock, pairs.size() - first);
     const auto each_pair = [size](const auto& work) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kPairsPerTask),
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kCollidedPairsPerTask),
                         [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t i = r.begin(); i < r.end(); ++i) work(i);
                         });

@@ -18,8 +18,8 @@ namespace {
 
 // Pairs a thread takes at a time, and pairs whose times of impact are found side by side before
 // they are gathered (a fixed room of slots rather than room per body).
-constexpr std::size_t kPairsPerTask = 128;
-constexpr std::size_t kPairsPerBlock = 8 * kPairsPerTask;
+constexpr std::size_t kSweptPairsPerTask = 128;
+constexpr std::size_t kSweptPairsPerBlock = 8 * kSweptPairsPerTask;
 
 }  // namespace
 
@@ -51,10 +51,10 @@ void LocalImpacts::classify(StepContext& ctx) {
     // On several threads, a block of pairs at a time: each pair's time into its own slot, each
     // task finding its first contact by bisection; then gathered in the pairs' order, so that
     // they do not depend on the number of threads.
-    times_.resize(kPairsPerBlock);
-    for (std::size_t first = 0; first < pairs.size(); first += kPairsPerBlock) {
-      const std::size_t size = std::min(kPairsPerBlock, pairs.size() - first);
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kPairsPerTask),
+    times_.resize(kSweptPairsPerBlock);
+    for (std::size_t first = 0; first < pairs.size(); first += kSweptPairsPerBlock) {
+      const std::size_t size = std::min(kSweptPairsPerBlock, pairs.size() - first);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kSweptPairsPerTask),
                         [&](const tbb::blocked_range<std::size_t>& r) {
                           const std::uint64_t key = contact_key(pairs[first + r.begin()]);
                           auto contact = std::partition_point(
