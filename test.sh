@@ -13,8 +13,15 @@ cd "$(dirname "$0")"
 
 # Unity builds, here and for the fuzzer: each target's files compiled together in batches of 8,
 # which parse the shared headers once a batch. The engine and the oracle took 41% less CPU
-# (259 s against 438 s), the fuzzer's build 34% less (186 s against 282 s).
-cmake -S . -B build-checked -DCMAKE_BUILD_TYPE=Debug -DGP_COVERAGE=ON -DGP_SANITIZE=ON \
+# (259 s against 438 s), the fuzzer's build 34% less (186 s against 282 s). Ninja: a target's
+# files compile while the targets it links are still compiling, where make waits for them (the
+# checked build 842 s against 974 s). A folder made by make is configured anew.
+for dir in build-checked build-fuzz; do
+  if [[ -f $dir/CMakeCache.txt ]] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$dir/CMakeCache.txt"; then
+    rm -rf "$dir/CMakeCache.txt" "$dir/CMakeFiles"
+  fi
+done
+cmake -G Ninja -S . -B build-checked -DCMAKE_BUILD_TYPE=Debug -DGP_COVERAGE=ON -DGP_SANITIZE=ON \
   -DCMAKE_UNITY_BUILD=ON
 cmake --build build-checked -j2
 find build-checked -name '*.gcda' -delete
@@ -25,7 +32,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 gcovr --root . --filter 'models/' --filter 'src/' --exclude-unreachable-branches \
   --gcov-ignore-parse-errors --print-summary --fail-under-line 90 build-checked
 
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Debug -DGP_FUZZ=ON \
+CC=clang CXX=clang++ cmake -G Ninja -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Debug -DGP_FUZZ=ON \
   -DCMAKE_UNITY_BUILD=ON
 cmake --build build-fuzz --target gamephysics_fuzz_scene -j2
 mkdir -p build-fuzz/corpus build-fuzz/artifacts

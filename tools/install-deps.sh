@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake
+  ninja-build          # ./test.sh's builds
   libeigen3-dev        # every vector and matrix
   libsundials-dev      # the oracle: CVODE and ARKODE
   catch2               # unit tests (catch2/catch.hpp)
