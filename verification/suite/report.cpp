@@ -79,8 +79,8 @@ void write_report(const std::filesystem::path& out, const std::vector<Check>& ch
     }
     const std::string result =
         c.criterion == "reported" ? "reported" : (c.passed ? "PASS" : "FAIL");
-    md << "|" << markdown_cell(c.name) << "|" << c.srs_ids << "|" << markdown_cell(c.measured) << "|"
-       << markdown_cell(c.criterion) << "|" << result << "|\n";
+    md << "|" << markdown_cell(c.name) << "|" << c.srs_ids << "|" << markdown_cell(c.measured)
+       << "|" << markdown_cell(c.criterion) << "|" << result << "|\n";
     html << "<tr class=\"" << (c.passed ? "" : "fail") << "\"><td>" << html_escape(c.name)
          << "</td><td>" << html_escape(c.srs_ids) << "</td><td>" << html_escape(c.measured)
          << "</td><td>" << html_escape(c.criterion) << "</td><td>" << result << "</td></tr>";

@@ -160,8 +160,9 @@ void add_dimensions(TraceFiles& files, const TraceInputs& in) {
     for (const auto& s : d.symbols)
       units += (units.empty() ? "" : " ") + s.symbol + "[" + s.unit + "]";
     const std::string result = d.consistent ? "consistent" : "INCONSISTENT";
-    md += "|" + d.id + "|" + d.form + "|`" + markdown_cell(d.equation) + "`|" + markdown_cell(units) + "|" +
-          d.lhs_dimension + "|" + d.rhs_dimension + "|" + result + "|\n";
+    md += "|" + d.id + "|" + d.form + "|`" + markdown_cell(d.equation) + "`|" +
+          markdown_cell(units) + "|" + d.lhs_dimension + "|" + d.rhs_dimension + "|" + result +
+          "|\n";
     csv += csv_field(d.id) + "," + csv_field(d.form) + "," + csv_field(d.equation) + "," +
            csv_field(units) + "," + csv_field(d.lhs_dimension) + "," + csv_field(d.rhs_dimension) +
            "," + (d.consistent ? "true" : "false") + "\n";
