@@ -54,6 +54,29 @@ struct EdgeSeparation {
 
 EdgeSeparation max_separation(const Hull& reference, const Hull& other);
 
+// The AVX2 path is built for x86-64 with GCC or Clang, and taken where the CPU has AVX2.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define GP_BOX_LANES_AVX2 1
+#else
+#define GP_BOX_LANES_AVX2 0
+#endif
+
+/// How many of a box's edges max_separation takes at a time against another box: one (the scalar
+/// loop), two (SSE2) or four (AVX2). Each gives the same edge and separation to the bit.
+enum class BoxLanes { kOne, kTwo, kFour };
+
+/// The widest way this build and CPU have, which max_separation takes.
+BoxLanes box_lanes();
+
+/// How `lanes` takes a box's edges, for --explain: "its edges four at a time (AVX2)".
+const char* box_lanes_name(BoxLanes lanes);
+
+/// max_separation of a box against a box, `lanes` edges at a time (kFour only where box_lanes()
+/// is kFour, kTwo only where it is not kOne).
+EdgeSeparation max_separation_of_boxes(std::span<const Vec2, 4> vertices,
+                                       std::span<const Vec2, 4> normals,
+                                       std::span<const Vec2, 4> other, BoxLanes lanes);
+
 /// The edge of `hull` whose normal is most nearly opposite `normal`: the edge that meets the
 /// reference edge with that normal.
 int incident_edge(const Hull& hull, const Vec2& normal);

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "engine/collision/hull.hpp"
 #include "engine/solver/velocity_passes.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
@@ -198,7 +199,10 @@ constexpr std::array kStages{
           "FR:Determine-Collisions A:collisionType LC:Expanded-Collisions",
           kLocalPass | kSubStepPass, collides,
           [](const StepContext&) {
-            return std::string("1 point (vertex to edge) or 2 points (edge to edge), warm started");
+            return std::string(
+                       "1 point (vertex to edge) or 2 points (edge to edge), warm started; a box "
+                       "against a box takes ") +
+                   box_lanes_name(box_lanes());
           },
           find_contacts},
     Stage{"time of impact: local impacts", "IM:col2D GD:impulse", kLocalPass, collides,
