@@ -47,9 +47,7 @@ void check_same(const gp::WorldShape& a, const gp::WorldShape& b) {
   check(gp::max_separation(hull_a, hull_b));
   for (const gp::BoxLanes lanes : {gp::BoxLanes::kOne, gp::BoxLanes::kTwo, gp::BoxLanes::kFour}) {
     if (lanes > gp::box_lanes()) continue;
-    INFO("edges at a time: " << (lanes == gp::BoxLanes::kOne   ? 1
-                                 : lanes == gp::BoxLanes::kTwo ? 2
-                                                               : 4));
+    INFO("a box's edges taken " << gp::box_lanes_name(lanes));
     check(gp::max_separation_of_boxes(hull_a.vertices.first<4>(), hull_a.normals.first<4>(),
                                       hull_b.vertices.first<4>(), lanes));
   }
@@ -83,6 +81,14 @@ TEST_CASE("Two boxes' separation, edges one, two or four at a time, is its defin
                                  gp::Vec2(0.5, 1.0), gp::Vec2(-1.0, -1.0)}) {
     check_same(box(1.0, 1.0, {0.0, 0.0}, 0.0), box(1.0, 1.0, offset, 0.0));
     check_same(box(1.0, 1.0, offset, 0.0), box(1.0, 1.0, {0.0, 0.0}, 0.0));
+  }
+  // A box whose place is not a number or not finite (a step about to report it): every path
+  // takes the minimum as the scalar loop does, keeping the separation where a term is NaN.
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (const gp::Vec2& odd : {gp::Vec2(kNaN, 0.0), gp::Vec2(kInf, 0.0), gp::Vec2(0.0, -kInf)}) {
+    check_same(box(1.0, 1.0, odd, 0.0), box(1.0, 1.0, {0.0, 0.0}, 0.0));
+    check_same(box(1.0, 1.0, {0.0, 0.0}, 0.0), box(1.0, 1.0, odd, 0.3));
   }
 }
 
