@@ -4,6 +4,13 @@
 #include <array>
 #include <limits>
 
+// The AVX2 path is built for x86-64 with GCC or Clang, and taken where the CPU has AVX2.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define GP_BOX_LANES_AVX2 1
+#else
+#define GP_BOX_LANES_AVX2 0
+#endif
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif

@@ -54,13 +54,6 @@ struct EdgeSeparation {
 
 EdgeSeparation max_separation(const Hull& reference, const Hull& other);
 
-// The AVX2 path is built for x86-64 with GCC or Clang, and taken where the CPU has AVX2.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define GP_BOX_LANES_AVX2 1
-#else
-#define GP_BOX_LANES_AVX2 0
-#endif
-
 /// How many of a box's edges max_separation takes at a time against another box: one (the scalar
 /// loop), two (SSE2) or four (AVX2). Each gives the same edge and separation to the bit.
 enum class BoxLanes { kOne, kTwo, kFour };
