@@ -1,9 +1,17 @@
 // The trajectory CSV: its header, one row per body per instant, and numbers that read back to
 // the same doubles.
+#include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <limits>
 #include <numbers>
+#include <random>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "engine/output/trajectory.hpp"
@@ -85,6 +93,57 @@ TEST_CASE("Numbers are written with 17 significant digits",
   CHECK(csv.str() ==
         "t,body,x,y,angle,vx,vy,omega\n"
         "0.33333333333333331,third,0.10000000000000001,0.30000000000000004,0,0,0,0\n");
+}
+
+// printf is the reference: the CSV's numbers are defined as its "%.17g".
+std::string printf_17g(double value) {
+  std::array<char, 32> text{};
+  const int length = std::snprintf(text.data(), text.size(), "%.17g", value);
+  return {text.data(), static_cast<std::size_t>(length)};
+}
+
+std::string written(double value) {
+  std::ostringstream out;
+  gp::write_number(out, value);
+  return out.str();
+}
+
+TEST_CASE("Every number is written as printf's %.17g writes it",
+          "[FR:Calculate-Translation-Over-Time]") {
+  using limits = std::numeric_limits<double>;
+  for (double value : {0.0,
+                       -0.0,
+                       1.0,
+                       -1.0,
+                       0.1,
+                       1.0 / 3.0,
+                       1e16,
+                       1e17,
+                       123456789012345678.0,
+                       1e-4,
+                       9.9999999999999995e-5,
+                       1e-5,
+                       limits::min(),
+                       limits::denorm_min(),
+                       limits::max(),
+                       -limits::max(),
+                       limits::infinity(),
+                       -limits::infinity(),
+                       limits::quiet_NaN(),
+                       2 * std::numbers::pi}) {
+    CAPTURE(value);
+    CHECK(written(value) == printf_17g(value));
+  }
+  // Doubles of every exponent and sign, as random bit patterns.
+  std::mt19937_64 bits(17);
+  for (int i = 0; i < 100000; ++i) {
+    const std::uint64_t pattern = bits();
+    double value = 0.0;
+    std::memcpy(&value, &pattern, sizeof value);
+    if (std::isnan(value)) continue;  // NaN's sign and payload are printf's own choice
+    CAPTURE(pattern);
+    REQUIRE(written(value) == printf_17g(value));
+  }
 }
 
 }  // namespace test_trajectory

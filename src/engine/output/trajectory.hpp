@@ -13,7 +13,8 @@ namespace gp {
 /// [0, 2π), velocity of the centre of mass vx, vy [m/s], angular velocity ω [rad/s].
 inline constexpr std::string_view kTrajectoryHeader = "t,body,x,y,angle,vx,vy,omega";
 
-/// A number as the trajectory CSV writes it: %.17g, so that reading it back gives the same double.
+/// A number as the trajectory CSV writes it: as printf's "%.17g", so that reading it back gives
+/// the same double.
 void write_number(std::ostream& out, double value);
 
 /// One row: time t [s], the body's name, its state.
