@@ -12,6 +12,7 @@
 
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
+#include "engine/geometry/closest_points.hpp"
 
 using gp::ContactManifold;
 using gp::Shape;
@@ -293,6 +294,81 @@ TEST_CASE("Signed distance is the gap between shapes apart and minus the depth o
                               place(Shape::segment({3, 0}, {4, 0}), {0.0, 0.0})) ==
           Approx(std::hypot(2.0, 0.3)).epsilon(1e-12));
   }
+}
+
+// The outline of a placed polygon or segment as a closed chain of vertices (a segment's one
+// edge is its chain's only edge), and its rounding radius [m].
+struct Outline {
+  std::vector<Vec2> vertices;
+  bool closed;
+  double radius;
+};
+
+Outline outline_of(const WorldShape& shape) {
+  if (const auto* polygon = std::get_if<gp::ConvexPolygon>(&shape.geometry)) {
+    return {{polygon->vertices.begin(), polygon->vertices.begin() + polygon->count}, true, 0.0};
+  }
+  const auto& segment = std::get<gp::Segment>(shape.geometry);
+  return {{segment.a, segment.b}, false, segment.radius};
+}
+
+// The definition of the gap between outlines apart: the least distance from a vertex of either
+// to an edge of the other, less both radii.
+double gap_by_definition(const Outline& a, const Outline& b) {
+  double squared = INFINITY;
+  const auto measure = [&squared](const Outline& from, const Outline& to) {
+    const std::size_t edges = to.closed ? to.vertices.size() : 1;
+    for (const Vec2& v : from.vertices) {
+      for (std::size_t i = 0; i < edges; ++i) {
+        const Vec2 nearest = gp::closest_point_on_segment(
+            v, to.vertices[i], to.vertices[(i + 1) % to.vertices.size()]);
+        squared = std::min(squared, (v - nearest).squaredNorm());
+      }
+    }
+  };
+  measure(a, b);
+  measure(b, a);
+  return std::sqrt(squared) - a.radius - b.radius;
+}
+
+TEST_CASE("The gap between polygons and segments apart is the least vertex-to-edge gap, to the bit",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Vec2> triangle{{0.0, 0.0}, {0.9, 0.1}, {0.2, 0.7}};
+  const std::vector<Vec2> hexagon{{0.5, 0.0},  {0.25, 0.43},   {-0.25, 0.43},
+                                  {-0.5, 0.0}, {-0.25, -0.43}, {0.25, -0.43}};
+  const std::vector<Shape> shapes{Shape::box(1.0, 0.6),
+                                  Shape::box(0.25, 0.25),
+                                  Shape::polygon(triangle),
+                                  Shape::polygon(hexagon),
+                                  Shape::segment({-0.5, 0.0}, {0.5, 0.1}, 0.05),
+                                  Shape::segment({0.0, 0.0}, {2.0, 0.0})};
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> offset(-1.5, 1.5);
+  std::uniform_real_distribution<double> turn(0.0, 2 * kPi);
+  std::uniform_int_distribution<std::size_t> pick(0, shapes.size() - 1);
+  int apart = 0;
+  // Near the origin, and 10 km from it, where a coordinate's round-off is a thousand times larger.
+  for (const Vec2& origin : {Vec2(0.0, 0.0), Vec2(1e4, -1e4)}) {
+    for (int i = 0; i < 20000; ++i) {
+      const WorldShape a = place(shapes[pick(random)], origin, turn(random));
+      const WorldShape b =
+          place(shapes[pick(random)], origin + Vec2(offset(random), offset(random)), turn(random));
+      const double gap = gp::signed_distance(a, b);
+      const Outline outline_a = outline_of(a);
+      const Outline outline_b = outline_of(b);
+      if (gap + outline_a.radius + outline_b.radius <= 0.0) continue;  // overlapping cores
+      ++apart;
+      CAPTURE(i, origin.x());
+      if (!outline_a.closed && !outline_b.closed) {
+        // Two segments are measured segment to segment, which rounds otherwise.
+        REQUIRE(gap == Approx(gap_by_definition(outline_a, outline_b)).margin(1e-12));
+      } else {
+        REQUIRE(gap == gap_by_definition(outline_a, outline_b));
+      }
+    }
+  }
+  // Enough pairs apart to have met every shape against every other.
+  CHECK(apart > 20000);
 }
 
 TEST_CASE("Signed distance changes no faster than a shape moves and crosses zero on contact",
