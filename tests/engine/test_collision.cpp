@@ -347,6 +347,7 @@ TEST_CASE("The gap between polygons and segments apart is the least vertex-to-ed
   std::uniform_real_distribution<double> turn(0.0, 2 * kPi);
   std::uniform_int_distribution<std::size_t> pick(0, shapes.size() - 1);
   int apart = 0;
+  int bounded = 0;  // answered by a bound
   // Near the origin, and 10 km from it, where a coordinate's round-off is a thousand times larger.
   for (const Vec2& origin : {Vec2(0.0, 0.0), Vec2(1e4, -1e4)}) {
     for (int i = 0; i < 20000; ++i) {
@@ -354,6 +355,12 @@ TEST_CASE("The gap between polygons and segments apart is the least vertex-to-ed
       const WorldShape b =
           place(shapes[pick(random)], origin + Vec2(offset(random), offset(random)), turn(random));
       const double gap = gp::signed_distance(a, b);
+      // Asked only whether they are further apart than some length: the gap itself, or, where it
+      // is surely longer, a bound that says so.
+      const double asked = gap + offset(random);
+      const double answer = gp::signed_distance(a, b, asked);
+      CHECK((answer == gap || (answer > asked && gap > asked)));
+      bounded += answer != gap ? 1 : 0;
       const Outline outline_a = outline_of(a);
       const Outline outline_b = outline_of(b);
       if (gap + outline_a.radius + outline_b.radius <= 0.0) continue;  // overlapping cores
@@ -369,6 +376,7 @@ TEST_CASE("The gap between polygons and segments apart is the least vertex-to-ed
   }
   // Enough pairs apart to have met every shape against every other.
   CHECK(apart > 20000);
+  CHECK(bounded > 1000);
 }
 
 TEST_CASE("Signed distance changes no faster than a shape moves and crosses zero on contact",

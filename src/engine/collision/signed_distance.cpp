@@ -72,7 +72,7 @@ const Vec2& support(const Hull& reference, int edge, const Hull& other) {
 // by more, the hull lying behind each. With room for the round-off of both, a billionth of the
 // lengths involved, far above the few ulps either can be off: a vertex let through only costs
 // its edges' measurement.
-bool beyond(const Vec2& vertex, const Hull& hull, double gap) {
+bool further_than(const Vec2& vertex, const Hull& hull, double gap) {
   const double room = 1e-9 * (1.0 + vertex.cwiseAbs().maxCoeff() + gap);
   for (int i = 0; i < hull.count(); ++i) {
     if (hull.normals[i].dot(vertex - hull.vertices[i]) > gap + room) return true;
@@ -80,12 +80,19 @@ bool beyond(const Vec2& vertex, const Hull& hull, double gap) {
   return false;
 }
 
-double core_distance(const Hull& a, const Hull& b) {
+// The separation of `a` and `b` along any edge normal bounds their gap from below: where it is
+// above `beyond` [m] by more than its round-off, the gap surely is too.
+bool surely_beyond(double separation, double beyond, const Hull& a) {
+  const double room = 1e-9 * (1.0 + a.vertices[0].cwiseAbs().maxCoeff() + std::abs(separation));
+  return separation - room > beyond;
+}
+
+double core_distance(const Hull& a, const Hull& b, double beyond) {
   // Overlapping convex cores: the shortest way out is along one of the edge normals.
   const EdgeSeparation best_a = max_separation(a, b);
   const EdgeSeparation best_b = max_separation(b, a);
   const double separation = std::max(best_a.separation, best_b.separation);
-  if (separation < 0.0) return separation;
+  if (separation < 0.0 || surely_beyond(separation, beyond, a)) return separation;
   if (a.count() == 2 && b.count() == 2) {
     // No edge normal separates collinear segments, whatever their gap: measure it. (Parallel
     // segments never overlap in the test above: one side of a line is always clear of the other.)
@@ -105,7 +112,7 @@ double core_distance(const Hull& a, const Hull& b) {
   double gap = std::sqrt(squared);
   const auto measure = [&](const Hull& from, const Hull& to) {
     for (const Vec2& v : from.vertices) {
-      if (&v == &first || beyond(v, to, gap)) continue;
+      if (&v == &first || further_than(v, to, gap)) continue;
       const double s = squared_distance_to_edges(v, to);
       if (s < squared) {
         squared = s;
@@ -120,7 +127,7 @@ double core_distance(const Hull& a, const Hull& b) {
 
 }  // namespace
 
-double signed_distance(const WorldShapeView& a, const WorldShapeView& b) {
+double signed_distance(const WorldShapeView& a, const WorldShapeView& b, double beyond) {
   const auto* circle_a = std::get_if<Circle>(&a.geometry);
   const auto* circle_b = std::get_if<Circle>(&b.geometry);
   if (circle_a != nullptr && circle_b != nullptr) {
@@ -135,7 +142,8 @@ double signed_distance(const WorldShapeView& a, const WorldShapeView& b) {
   }
   return visit_as_hull(a.geometry, [&](const Hull& hull_a) {
     return visit_as_hull(b.geometry, [&](const Hull& hull_b) {
-      return core_distance(hull_a, hull_b) - hull_a.radius - hull_b.radius;
+      const double radii = hull_a.radius + hull_b.radius;
+      return core_distance(hull_a, hull_b, beyond + radii) - hull_a.radius - hull_b.radius;
     });
   });
 }

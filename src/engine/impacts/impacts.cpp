@@ -117,7 +117,7 @@ std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, cons
       closing_speed_bound(a.shape, b.shape, motion, window.h) * (window.h - window.t0);
   const double out_of_reach = 2.0 * reach + kRoundOff;
   if (a.at_t0.bounds.gap_to(b.at_t0.bounds) > out_of_reach) return std::nullopt;
-  const double d0 = signed_distance(a.at_t0, b.at_t0);
+  const double d0 = signed_distance(a.at_t0, b.at_t0, out_of_reach);
   if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
   if (d0 > out_of_reach) return std::nullopt;
   const double d1 =
