@@ -108,14 +108,16 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
 
 std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
                                   const StepWindow& window, const ImpactFilter& filter) {
-  // Shapes further apart than the pair can close over the window cannot touch in it. Twice that
-  // and a nanometre, so that no round-off in the distances could have let the search below find a
-  // touch: the result is the same with or without these tests. Their boxes' gap is tested first,
-  // needing no distance computed; then the distance, which turned polygons leave wider.
+  // Shapes further apart than the pair can close over the window cannot touch in it: the distance
+  // changes no faster than the bound on their closing speed, so at the window's end they are
+  // still apart, and the search below would find no touch. A nanometre more, far above the
+  // distances' round-off, so that the result is the same with or without these tests. Their
+  // boxes' gap is tested first, needing no distance computed; then the distance, which turned
+  // polygons leave wider.
   constexpr double kRoundOff = 1e-9;  // m
   const double reach =
       closing_speed_bound(a.shape, b.shape, motion, window.h) * (window.h - window.t0);
-  const double out_of_reach = 2.0 * reach + kRoundOff;
+  const double out_of_reach = reach + kRoundOff;
   if (a.at_t0.bounds.gap_to(b.at_t0.bounds) > out_of_reach) return std::nullopt;
   const double d0 = signed_distance(a.at_t0, b.at_t0, out_of_reach);
   if (d0 <= filter.slop) return std::nullopt;  // already in contact: the contact solver's business
