@@ -71,7 +71,7 @@ int oracle(const OracleCommandOptions& options);
 struct PeerOptions {
   std::filesystem::path scene;
   std::filesystem::path out;       ///< the trajectory CSV to write
-  std::string engine;              ///< chipmunk or box2d
+  std::string engine;              ///< one of peers::engine_choices()
   std::string config = "matched";  ///< default (as its users run it) or matched (to ours)
   SceneOverrides overrides;
 };

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
+#include "verification/peers/peer_world.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"GamePhysics: a verification-driven 2D rigid-body physics library (SRS-traced)"};
@@ -68,7 +69,7 @@ int main(int argc, char** argv) {
   auto* peer = app.add_subcommand("peer", "Run a scene file in Chipmunk2D or Box2D, write CSV");
   gp::cli::add_scene_options(*peer, peer_run.scene, peer_run.overrides,
                              gp::cli::kStep | gp::cli::kDuration | gp::cli::kOutputInterval);
-  peer->add_option("--engine", peer_run.engine, "chipmunk or box2d")->required();
+  peer->add_option("--engine", peer_run.engine, gp::peers::engine_choices())->required();
   peer->add_option("--config", peer_run.config,
                    "matched (our physics, the default) or default (as the peer's users run it)");
   peer->add_option("--out", peer_run.out, "Trajectory CSV to write")->required();

@@ -16,7 +16,8 @@ int peer(const PeerOptions& options) {
   const std::string file = options.scene.string();
   const auto engine = peers::engine_from_name(options.engine);
   if (!engine) {
-    std::cerr << "error: peer: --engine must be chipmunk or box2d, got " << options.engine << "\n";
+    std::cerr << "error: peer: --engine must be " << peers::engine_choices() << ", got "
+              << options.engine << "\n";
     return kBadInput;
   }
   const auto config = peers::config_from_name(options.config);

@@ -23,13 +23,13 @@ constexpr PeerOf kPeers[] = {
      peers::PeerConfig::Matched},
     {Engine::Box2dDefault, "box2d-default", peers::PeerEngine::Box2d, peers::PeerConfig::Default},
     {Engine::Box2dMatched, "box2d-matched", peers::PeerEngine::Box2d, peers::PeerConfig::Matched},
+#ifdef GP_HAVE_BOX2D3
+    {Engine::Box2d3Default, "box2d3-default", peers::PeerEngine::Box2d3,
+     peers::PeerConfig::Default},
+    {Engine::Box2d3Matched, "box2d3-matched", peers::PeerEngine::Box2d3,
+     peers::PeerConfig::Matched},
+#endif
 };
-
-// Debian's libchipmunk.so.7.0.3 holds the banner "Chipmunk v%s (Debug Enabled)" and the messages
-// of cpBodySanityCheck, and calls cpMessage from 168 places; libbox2d.so.2.4.1 calls
-// __assert_fail from 195: neither was built with NDEBUG.
-constexpr std::string_view kChipmunkBuild = "double, Debian build, debug checks on";
-constexpr std::string_view kBox2dBuild = "float, Debian build, asserts on";
 
 const PeerOf* peer_of(Engine engine) {
   for (const PeerOf& p : kPeers) {
@@ -47,8 +47,7 @@ std::string_view engine_label(Engine engine) {
 
 std::string_view engine_build(Engine engine) {
   const PeerOf* p = peer_of(engine);
-  if (!p) return "double, this build";
-  return p->peer == peers::PeerEngine::Chipmunk ? kChipmunkBuild : kBox2dBuild;
+  return p ? peers::library_build(p->peer) : "double, this build";
 }
 
 std::string_view engine_build(std::string_view label) {

@@ -1,6 +1,6 @@
 #pragma once
-// Our engine and the two peers behind one stepping interface, so that one benchmark body times
-// all three alike.
+// Our engine and the peers behind one stepping interface, so that one benchmark body times them
+// all alike.
 
 #include <array>
 #include <memory>
@@ -15,13 +15,27 @@
 namespace gp::bench {
 
 /// Ours, and each peer twice: as its users run it (peers::PeerConfig::Default) and matched to our
-/// physics (peers::PeerConfig::Matched).
-enum class Engine { Ours, ChipmunkDefault, ChipmunkMatched, Box2dDefault, Box2dMatched };
+/// physics (peers::PeerConfig::Matched); Box2D 3 only in a build that has it (peers::PeerEngine).
+enum class Engine {
+  Ours,
+  ChipmunkDefault,
+  ChipmunkMatched,
+  Box2dDefault,
+  Box2dMatched,
+#ifdef GP_HAVE_BOX2D3
+  Box2d3Default,
+  Box2d3Matched,
+#endif
+};
 
 /// Ours first, as the ratios are of our time to a peer's: the order of the runs and of the tables.
-inline constexpr std::array<Engine, 5> kEngines{Engine::Ours, Engine::ChipmunkDefault,
-                                                Engine::ChipmunkMatched, Engine::Box2dDefault,
-                                                Engine::Box2dMatched};
+inline constexpr std::array kEngines{
+    Engine::Ours,          Engine::ChipmunkDefault, Engine::ChipmunkMatched,
+    Engine::Box2dDefault,  Engine::Box2dMatched,
+#ifdef GP_HAVE_BOX2D3
+    Engine::Box2d3Default, Engine::Box2d3Matched,
+#endif
+};
 
 /// Ours on two threads, run by gamephysics_bench beside the engines (ours and the peers on one):
 /// its row's ours/engine is the speed-up the second thread gives.
@@ -38,12 +52,14 @@ inline constexpr std::array<OursIntegrator, 2> kOursIntegrators{
     OursIntegrator{"ours-symplectic-euler", IntegratorKind::SymplecticEuler},
     OursIntegrator{"ours-rk4", IntegratorKind::RK4}};
 
-/// "ours", "chipmunk-default", "chipmunk-matched", "box2d-default", "box2d-matched".
+/// "ours", "chipmunk-default", "chipmunk-matched", "box2d-default", "box2d-matched",
+/// "box2d3-default", "box2d3-matched".
 std::string_view engine_label(Engine engine);
 
 /// The engine's precision and how its library was built, for beside every speed figure: ours in
-/// double from this build; Chipmunk2D in double and Box2D in float, both Debian's builds, made
-/// without NDEBUG, so that their debug checks (cpAssertSoft, cpAssertSaneBody; b2Assert) run.
+/// double from this build; the peers as peers::library_build says (Chipmunk2D in double and
+/// Box2D 2.4 in float, both Debian's builds with their debug checks on; Box2D 3 in float, built
+/// from GP_BOX2D3_DIR).
 std::string_view engine_build(Engine engine);
 /// The same for the engine labelled `label` (engine_label); empty for an unknown label.
 std::string_view engine_build(std::string_view label);

@@ -1,6 +1,6 @@
 #pragma once
-// A scene run by a peer engine (Chipmunk2D 7, Box2D 2.4) behind one interface, so that a run, a
-// trajectory or a benchmark is written once for both and compared with our own Space.
+// A scene run by a peer engine (Chipmunk2D 7, Box2D 2.4, optionally Box2D 3) behind one interface,
+// so that a run, a trajectory or a benchmark is written once for all and compared with our Space.
 
 #include <memory>
 #include <optional>
@@ -13,12 +13,24 @@
 
 namespace gp::peers {
 
-enum class PeerEngine { Chipmunk, Box2d };
+/// The peers this build has: Box2D 3 only when CMake was given a checkout of it (GP_BOX2D3_DIR,
+/// which defines GP_HAVE_BOX2D3 for every target that links the peers).
+enum class PeerEngine {
+  Chipmunk,
+  Box2d,
+#ifdef GP_HAVE_BOX2D3
+  Box2d3,
+#endif
+};
 
-/// "chipmunk", "box2d".
+/// "chipmunk", "box2d", "box2d3".
 std::string_view engine_name(PeerEngine engine);
 /// The engine named `name`, or nothing.
 std::optional<PeerEngine> engine_from_name(std::string_view name);
+/// The peers' names for a message: "chipmunk or box2d", "chipmunk, box2d or box2d3".
+std::string engine_choices();
+/// The engine's precision and how its library was built, for beside its figures.
+std::string_view library_build(PeerEngine engine);
 
 class PeerWorld {
  public:
