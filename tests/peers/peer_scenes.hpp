@@ -1,7 +1,10 @@
 #pragma once
 // Small scenes for the peer-engine tests, built in code.
 
+#include <memory>
+
 #include "scene/scene.hpp"
+#include "verification/peers/peer_world.hpp"
 
 namespace gp::peers::testing {
 
@@ -43,6 +46,29 @@ inline BodyDef floor_box(double width, double friction) {
   def.type = BodyType::Static;
   def.shapes.push_back({Shape::box(width, 1.0, {0.0, -0.5}), 0.0, friction});
   return def;
+}
+
+/// The free flight of the peers' motion tests: a point mass of 1 kg thrown from x0 [m] at v0 [m/s]
+/// under gravity g [m/s²], stepped `steps` times by h [s].
+namespace projectile {
+inline constexpr double h = 0.01;
+inline constexpr int steps = 200;
+inline const Vec2 x0{1.5, 2.0}, v0{10.0, 10.0}, g{0.0, -9.81};
+}  // namespace projectile
+
+/// The projectile in `engine`, after its steps.
+inline std::unique_ptr<PeerWorld> thrown_projectile(PeerEngine engine) {
+  Scene scene = empty_scene(projectile::h);
+  scene.settings.gravity = projectile::g;
+  BodyDef body;
+  body.name = "projectile";
+  body.position = projectile::x0;
+  body.velocity = projectile::v0;
+  body.mass = 1.0;
+  scene.bodies.push_back(body);
+  auto world = make_peer(engine, peer_scene(scene));
+  for (int n = 0; n < projectile::steps; ++n) world->step(projectile::h);
+  return world;
 }
 
 }  // namespace gp::peers::testing

@@ -28,19 +28,12 @@ TEST_CASE("Box2D 3 moves a projectile as sub-stepped symplectic Euler to float p
           "[NFR:Correctness][peers]") {
   // Each of its 4 sub-steps of s = h/4 updates the velocity, then moves with it: after N = 4n
   // sub-steps x_N = x₀ + v₀ N s + g s² N(N + 1)/2, v_N = v₀ + g N s.
-  constexpr double h = 0.01;
-  constexpr int steps = 200;
-  const Vec2 x0{1.5, 2.0}, v0{10.0, 10.0}, g{0.0, -9.81};
-  gp::Scene scene = empty_scene(h);
-  scene.settings.gravity = g;
-  gp::BodyDef body;
-  body.name = "projectile";
-  body.position = x0;
-  body.velocity = v0;
-  body.mass = 1.0;
-  scene.bodies.push_back(body);
-  auto world = gp::peers::make_peer(PeerEngine::Box2d3, gp::peers::peer_scene(scene));
-  for (int n = 0; n < steps; ++n) world->step(h);
+  using gp::peers::testing::projectile::g;
+  using gp::peers::testing::projectile::h;
+  using gp::peers::testing::projectile::steps;
+  using gp::peers::testing::projectile::v0;
+  using gp::peers::testing::projectile::x0;
+  const auto world = gp::peers::testing::thrown_projectile(PeerEngine::Box2d3);
   const gp::BodyState state = world->state(0);
   const double s = h / Box2d3World::kSubSteps;
   const double N = steps * Box2d3World::kSubSteps;

@@ -13,29 +13,18 @@ using gp::peers::testing::empty_scene;
 namespace {
 namespace test_peer_motion {
 
-constexpr double h = 0.01;  // s
-constexpr int steps = 200;
-const Vec2 x0{1.5, 2.0}, v0{10.0, 10.0}, g{0.0, -9.81};
-
-std::unique_ptr<gp::peers::PeerWorld> projectile(PeerEngine engine) {
-  gp::Scene scene = empty_scene(h);
-  scene.settings.gravity = g;
-  gp::BodyDef body;
-  body.name = "projectile";
-  body.position = x0;
-  body.velocity = v0;
-  body.mass = 1.0;
-  scene.bodies.push_back(body);
-  auto world = gp::peers::make_peer(engine, gp::peers::peer_scene(scene));
-  for (int n = 0; n < steps; ++n) world->step(h);
-  return world;
-}
+using gp::peers::testing::thrown_projectile;
+using gp::peers::testing::projectile::g;
+using gp::peers::testing::projectile::h;
+using gp::peers::testing::projectile::steps;
+using gp::peers::testing::projectile::v0;
+using gp::peers::testing::projectile::x0;
 
 TEST_CASE("Chipmunk2D moves a projectile as position-first symplectic Euler to 1e-12 m",
           "[NFR:Correctness][peers]") {
   // cpSpaceStep moves positions with the old velocity, then updates the velocity:
   // x_n = x₀ + v₀ n h + g h² n(n − 1)/2, v_n = v₀ + g n h.
-  const gp::BodyState s = projectile(PeerEngine::Chipmunk)->state(0);
+  const gp::BodyState s = thrown_projectile(PeerEngine::Chipmunk)->state(0);
   const double n = steps;
   const Vec2 x = x0 + v0 * n * h + g * h * h * n * (n - 1) / 2;
   const Vec2 v = v0 + g * n * h;
@@ -50,7 +39,7 @@ TEST_CASE("Box2D moves a projectile as velocity-first symplectic Euler to float 
           "[NFR:Correctness][peers]") {
   // b2World::Step updates the velocity, then moves positions with it:
   // x_n = x₀ + v₀ n h + g h² n(n + 1)/2, v_n = v₀ + g n h; in single precision, 1e-4 relative.
-  const gp::BodyState s = projectile(PeerEngine::Box2d)->state(0);
+  const gp::BodyState s = thrown_projectile(PeerEngine::Box2d)->state(0);
   const double n = steps;
   const Vec2 x = x0 + v0 * n * h + g * h * h * n * (n + 1) / 2;
   const Vec2 v = v0 + g * n * h;

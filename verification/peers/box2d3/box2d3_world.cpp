@@ -41,6 +41,8 @@ b2Rot rotation(double angle) {
   return {static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle))};
 }
 
+// The same mapping as Box2dWorld's, over Box2D 3's enum of the same name, which no file may see
+// beside Box2D 2.4's.
 b2BodyType b2_type(BodyType type) {
   switch (type) {
     case BodyType::Static:
