@@ -21,23 +21,29 @@ using gp::Vec2;
 namespace {
 namespace test_broadphase {
 
-/// Whether the broadphase should report proxies i < j: not both static, and their boxes, each
-/// fattened by half the margin, overlap.
-bool should_pair(const std::vector<BroadphaseProxy>& proxies, std::size_t i, std::size_t j,
-                 double margin) {
-  if (proxies[i].is_static && proxies[j].is_static) return false;
-  return proxies[i]
-      .bounds.fattened(0.5 * margin)
-      .overlaps(proxies[j].bounds.fattened(0.5 * margin));
+/// Each proxy's box fattened by half the margin: the boxes whose overlaps make pairs.
+std::vector<Aabb> fattened_bounds(const std::vector<BroadphaseProxy>& proxies, double margin) {
+  std::vector<Aabb> fattened;
+  for (const BroadphaseProxy& proxy : proxies)
+    fattened.push_back(proxy.bounds.fattened(0.5 * margin));
+  return fattened;
+}
+
+/// Whether the broadphase should report proxies i < j: not both static, and their fattened boxes
+/// overlap.
+bool should_pair(const std::vector<BroadphaseProxy>& proxies, const std::vector<Aabb>& fattened,
+                 std::size_t i, std::size_t j) {
+  return !(proxies[i].is_static && proxies[j].is_static) && fattened[i].overlaps(fattened[j]);
 }
 
 /// Every pair the broadphase should report, by testing all N² / 2 pairs.
 std::vector<ShapePair> all_overlapping_pairs(const std::vector<BroadphaseProxy>& proxies,
                                              double margin) {
+  const std::vector<Aabb> fattened = fattened_bounds(proxies, margin);
   std::vector<ShapePair> pairs;
   for (std::size_t i = 0; i < proxies.size(); ++i) {
     for (std::size_t j = i + 1; j < proxies.size(); ++j) {
-      if (should_pair(proxies, i, j, margin)) {
+      if (should_pair(proxies, fattened, i, j)) {
         pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
       }
     }
@@ -50,12 +56,13 @@ std::vector<ShapePair> all_overlapping_pairs(const std::vector<BroadphaseProxy>&
 /// after: its pairs dropped, then each of the N − 1 pairs with it tested again.
 void retest_pairs_of(std::vector<ShapePair>& pairs, const std::vector<BroadphaseProxy>& proxies,
                      std::size_t moved, double margin) {
+  const std::vector<Aabb> fattened = fattened_bounds(proxies, margin);
   std::erase_if(pairs,
                 [moved](const ShapePair& p) { return p.first == moved || p.second == moved; });
   for (std::size_t other = 0; other < proxies.size(); ++other) {
     const std::size_t i = std::min(moved, other);
     const std::size_t j = std::max(moved, other);
-    if (i != j && should_pair(proxies, i, j, margin)) {
+    if (i != j && should_pair(proxies, fattened, i, j)) {
       pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
     }
   }
