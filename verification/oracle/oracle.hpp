@@ -63,6 +63,8 @@ struct OracleOptions {
   double step = 1e-3;
   /// Most solver steps in a run (a bound on the work); more is a solver failure.
   long max_steps = 10'000'000;
+
+  bool operator==(const OracleOptions&) const = default;
 };
 
 /// An impact resolved at its time of contact (IM:col2D, or Newton's law at several points).

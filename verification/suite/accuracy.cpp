@@ -81,7 +81,7 @@ std::string ids_of(const Trajectory& reference) {
 }  // namespace
 
 std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
-                                   CsvFiles& data) {
+                                   OracleReferences& references, CsvFiles& data) {
   CheckList list("accuracy against the oracle");
   std::ostringstream csv;
   csv << "scene,integrator,dt,position,orientation,velocity,angular_velocity,end_position,"
@@ -92,7 +92,7 @@ std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const 
     if (o.progress) *o.progress << "  accuracy: " << name << "\n";
     const std::vector<double> times = output_instants(scene.duration, scene.dt);
     OracleOptions options = reference_options(scene);
-    const auto reference = oracle_reference(list, name, scene, times, options);
+    const auto reference = references.find(list, name, scene, times, options);
     if (!reference) continue;
     const Trajectory& cvode = reference->trajectory;
     const std::size_t crossed = cross_checked_instants(times, o.quick);

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "verification/oracle/oracle.hpp"
 #include "verification/suite/check.hpp"
@@ -49,6 +50,26 @@ struct OracleReference {
 std::optional<OracleReference> oracle_reference(CheckList& list, const std::string& name,
                                                 const Scene& scene, std::span<const double> times,
                                                 const OracleOptions& options);
+
+/// The oracle references of one run of the suite, each solved once: sections that compare with
+/// the same scene at the same instants and options (accuracy, peers) share its solution.
+class OracleReferences {
+ public:
+  /// oracle_reference's answer; a reference solved before for the same scene name, duration,
+  /// instants and options is given again, its row added to `list` again, without solving.
+  std::optional<OracleReference> find(CheckList& list, const std::string& name, const Scene& scene,
+                                      std::span<const double> times, const OracleOptions& options);
+
+ private:
+  struct Entry {
+    std::string name;
+    double duration;
+    std::vector<double> times;
+    OracleOptions options;
+    OracleReference reference;
+  };
+  std::vector<Entry> entries_;
+};
 
 /// The row of a peer or method that cannot run `name`: a failure, naming what it said.
 void cannot_run(CheckList& list, const std::string& name, const std::string& who,

@@ -46,7 +46,7 @@ double rounding(const Trajectory& oracle) {
 }  // namespace
 
 std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
-                               CsvFiles& data) {
+                               OracleReferences& references, CsvFiles& data) {
   CheckList list("peers against the oracle");
   if (!scenes.empty()) {
     // The settings every row below runs with, on the first scene (a scene's own iterations,
@@ -69,7 +69,7 @@ std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const Suit
     if (o.quick) scene.duration = std::min(scene.duration, 1.0);
     if (o.progress) *o.progress << "  peers: " << name << "\n";
     const std::vector<double> times = output_instants(scene.duration, scene.dt);
-    const auto reference = oracle_reference(list, name, scene, times, reference_options(scene));
+    const auto reference = references.find(list, name, scene, times, reference_options(scene));
     if (!reference) continue;
     const Trajectory& oracle = reference->trajectory;
     const IntegratorKind own = scene.settings.integrator;

@@ -14,13 +14,14 @@ SuiteResult run_suite(const SuiteOptions& o, const std::vector<Check>& audit_row
   const auto add = [&checks](const std::vector<Check>& rows) {
     checks.insert(checks.end(), rows.begin(), rows.end());
   };
-  add(accuracy_checks(scenes, o, data));
+  OracleReferences references;
+  add(accuracy_checks(scenes, o, references, data));
   add(closed_form_checks(scenes, o));
   add(convergence_checks(scenes, o, data));
   add(conservation_checks(scenes, o));
   add(hard_case_checks(o));
   add(long_run_checks(o));
-  add(peer_checks(scenes, o, data));
+  add(peer_checks(scenes, o, references, data));
   add(pile_checks(scenes, o, data));
   add(stability_checks(o));
   if (!o.quick) add(work_precision_checks(scenes, o, data));

@@ -10,6 +10,7 @@
 
 #include "scene/scene.hpp"
 #include "verification/suite/check.hpp"
+#include "verification/suite/oracle_domain.hpp"
 
 namespace gp::verification {
 
@@ -35,7 +36,7 @@ std::vector<NamedScene> load_scenes(const std::filesystem::path& directory);
 /// for the report's plots.
 using CsvFiles = std::vector<std::pair<std::string, std::string>>;
 std::vector<Check> accuracy_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
-                                   CsvFiles& data);
+                                   OracleReferences& references, CsvFiles& data);
 std::vector<Check> convergence_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
                                       CsvFiles& data);
 std::vector<Check> closed_form_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o);
@@ -47,7 +48,7 @@ std::vector<Check> hard_case_checks(const SuiteOptions& o);
 std::vector<Check> long_run_checks(const SuiteOptions& o);
 std::vector<Check> stability_checks(const SuiteOptions& o);
 std::vector<Check> peer_checks(const std::vector<NamedScene>& scenes, const SuiteOptions& o,
-                               CsvFiles& data);
+                               OracleReferences& references, CsvFiles& data);
 std::vector<Check> work_precision_checks(const std::vector<NamedScene>& scenes,
                                          const SuiteOptions& o, CsvFiles& data);
 /// The rows above held to the rule that a limit sits within kLooseness of its figure or says
