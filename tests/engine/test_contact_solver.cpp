@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "engine/collision/collision_detection.hpp"
 #include "engine/geometry/transform.hpp"
@@ -97,19 +99,25 @@ TEST_CASE("Prepared and warm-started in one pass, a resting box gets its masses 
   CHECK(before.velocity[1].y() == 0.0);
 }
 
-TEST_CASE("A rotation turned slightly agrees with one built from the new angle",
+TEST_CASE("A rotation turned by its series agrees with one built from the new angle",
           "[via:DD:angDisp]") {
   const gp::Rotation rotation(2.5);
-  for (double turn : {1e-3, -1e-3, 3e-7, 0.0}) {
-    const gp::Rotation turned = rotation.turned_slightly(turn);
+  std::vector<double> turns{1e-3, -1e-3, 3e-7, 0.0, 1.0001e-3, -0.1, 0.1};
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> any_turn(-gp::Rotation::kLargestSeriesTurn,
+                                                  gp::Rotation::kLargestSeriesTurn);
+  for (int i = 0; i < 1000; ++i) turns.push_back(any_turn(random));
+  for (const double turn : turns) {
+    const gp::Rotation turned = rotation.turned(turn);
     const gp::Rotation exact(2.5 + turn);
     for (const gp::Vec2& v : {gp::Vec2{1.0, 0.0}, gp::Vec2{0.0, 1.0}, gp::Vec2{-0.3, 0.7}}) {
+      INFO("turn " << turn);
       CHECK((turned.rotate(v) - exact.rotate(v)).norm() < 1e-13);
     }
   }
-  // The series is not meant for large turns: a tenth of a radian already errs by far more.
-  CHECK((rotation.turned_slightly(0.1).rotate({1.0, 0.0}) - gp::Rotation(2.6).rotate({1.0, 0.0}))
-            .norm() > 1e-7);
+  // The series is not meant for larger turns: at 0.3 rad it errs by far more.
+  CHECK((rotation.turned(0.3).rotate({1.0, 0.0}) - gp::Rotation(2.8).rotate({1.0, 0.0})).norm() >
+        1e-11);
 }
 
 TEST_CASE("A point's arms come back from their cross products with the normal and tangent",

@@ -40,16 +40,14 @@ class RotationCache {
   /// Forgets every rotation; sized for `bodies` bodies.
   void reset(std::size_t bodies);
   /// `body` was turned by `turn` [rad] to `angle` [rad]: its rotation follows, or is forgotten
-  /// after a turn too large for the series.
+  /// after a turn too large for the series of Rotation::turned.
   void turn(BodyId body, double angle, double turn) {
-    // Beyond this, the series of Rotation::turned_slightly errs by more than 1e-13 rad.
-    constexpr double kSmallTurn = 1e-3;
     if (turn == 0.0 || std::isnan(angle_[body])) return;
-    if (std::abs(turn) > kSmallTurn) {
+    if (std::abs(turn) > Rotation::kLargestSeriesTurn) {
       angle_[body] = std::numeric_limits<double>::quiet_NaN();
       return;
     }
-    rotation_[body] = rotation_[body].turned_slightly(turn);
+    rotation_[body] = rotation_[body].turned(turn);
     angle_[body] = angle;
   }
   /// `v` turned by `angle` [rad], the current angle of `body`.
