@@ -6,6 +6,7 @@
 #include <cmath>
 #include <utility>
 
+#include "engine/capacity.hpp"
 #include "engine/collision/narrowphase.hpp"
 #include "engine/threads.hpp"
 
@@ -96,16 +97,22 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   ContactSet& contacts = ctx.contacts;
   contacts.clear();
   const std::span<const ShapePair> pairs = ctx.pairs;
+  const double slop = ctx.settings.linear_slop;
+  std::vector<std::uint8_t>& touching = ctx.touching_pairs;
+  reserve_for(touching, pairs.size());
+  touching.assign(pairs.size(), 0);
   if (one_thread()) {
     // previous is sorted by key, and so are the pairs: one forward scan matches them.
     auto old = previous.begin();
-    for (const ShapePair& p : pairs) {
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const ShapePair& p = pairs[i];
       const ContactManifold m = collide(world.geometry(p.first), world.geometry(p.second), margin_);
       if (m.count == 0) continue;
       Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
       const std::uint64_t pair = WarmStart::pair_key(p);
       while (old != previous.end() && old->pair() < pair) ++old;
       warm_start_points(old, previous.end(), pair, impulse_scale, contacts.points(c));
+      touching[i] = touches(contacts.points(c), slop);
     }
     return;
   }
@@ -145,6 +152,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
       fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
       warm_start_points(warm_start_of_[i], previous.end(), WarmStart::pair_key(p), impulse_scale,
                         contacts.points(c));
+      touching[first + i] = touches(contacts.points(c), slop);
     });
   }
 }

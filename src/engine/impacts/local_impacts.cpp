@@ -26,63 +26,49 @@ constexpr std::size_t kSweptPairsPerBlock = 8 * kSweptPairsPerTask;
 void LocalImpacts::classify(StepContext& ctx) {
   pending_.clear();
   if (!ctx.impacts_allowed()) return;
-  ContactSet& contacts = ctx.contacts;
   const WorldShapes& start = ctx.world_start;
   const ImpactFilter f = impact_filter(ctx.settings);
   const auto impact_of = [&](const ShapePair& p) {
     return impact_time({ctx.shapes[p.first], start[p.first]},
                        {ctx.shapes[p.second], start[p.second]}, *ctx.motion, {0.0, ctx.h}, f);
   };
-  // The time of impact of pair `p` unless it touches already (the contact solver's then, and no
-  // distance to compute); `contact` is the first contact not before p's, as both lists are sorted
-  // by pair, and moves on past it.
-  const auto time_unless_touching = [&](const ShapePair& p, auto& contact) {
-    while (contact != contacts.end() && contact->key() < contact_key(p)) ++contact;
-    const bool has_contact = contact != contacts.end() && contact->key() == contact_key(p);
-    return has_contact && touching(ctx, *contact) ? std::nullopt : impact_of(p);
-  };
+  // Pairs whose contact touches are the contact solver's: no distance to compute.
   const std::span<const ShapePair> pairs = ctx.pairs;
+  const std::vector<std::uint8_t>& touching = ctx.touching_pairs;
   if (one_thread()) {
-    auto contact = contacts.begin();
-    for (const ShapePair& p : pairs) {
-      if (const auto tau = time_unless_touching(p, contact)) pending_.push_back({p, *tau});
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      if (touching[i] != 0) continue;
+      if (const auto tau = impact_of(pairs[i])) pending_.push_back({pairs[i], *tau});
     }
   } else {
-    // On several threads, a block of pairs at a time: each pair's time into its own slot, each
-    // task finding its first contact by bisection; then gathered in the pairs' order, so that
-    // they do not depend on the number of threads.
+    // On several threads, a block of the pairs apart at a time: each one's time into its own
+    // slot, then gathered in the pairs' order, so that they do not depend on the number of
+    // threads.
+    apart_.reserve(kSweptPairsPerBlock);
     times_.resize(kSweptPairsPerBlock);
-    for (std::size_t first = 0; first < pairs.size(); first += kSweptPairsPerBlock) {
-      const std::size_t size = std::min(kSweptPairsPerBlock, pairs.size() - first);
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kSweptPairsPerTask),
+    for (std::size_t next = 0; next < pairs.size();) {
+      apart_.clear();
+      for (; next < pairs.size() && apart_.size() < kSweptPairsPerBlock; ++next) {
+        if (touching[next] == 0) apart_.push_back(static_cast<std::uint32_t>(next));
+      }
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, apart_.size(), kSweptPairsPerTask),
                         [&](const tbb::blocked_range<std::size_t>& r) {
-                          const std::uint64_t key = contact_key(pairs[first + r.begin()]);
-                          auto contact = std::partition_point(
-                              contacts.begin(), contacts.end(),
-                              [key](const Contact& c) { return c.key() < key; });
-                          for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                            times_[i] = time_unless_touching(pairs[first + i], contact);
+                          for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                            times_[k] = impact_of(pairs[apart_[k]]);
                           }
                         });
-      for (std::size_t i = 0; i < size; ++i) {
-        if (times_[i]) pending_.push_back({pairs[first + i], *times_[i]});
+      for (std::size_t k = 0; k < apart_.size(); ++k) {
+        if (times_[k]) pending_.push_back({pairs[apart_[k]], *times_[k]});
       }
     }
   }
   if (pending_.empty()) return;
   // An impact is resolved at its t_c; its speculative contact must not close the gap before.
   auto impact = pending_.begin();
-  contacts.erase_if([&](const Contact& c) {
+  ctx.contacts.erase_if([&](const Contact& c) {
     while (impact != pending_.end() && contact_key(impact->pair) < c.key()) ++impact;
     return impact != pending_.end() && contact_key(impact->pair) == c.key();
   });
-}
-
-bool LocalImpacts::touching(const StepContext& ctx, const Contact& c) const {
-  for (const ContactPointState& p : ctx.contacts.points(c)) {
-    if (p.depth > -ctx.settings.linear_slop) return true;
-  }
-  return false;
 }
 
 bool LocalImpacts::in_solver(const StepContext& ctx, std::uint32_t shape) const {

@@ -59,8 +59,6 @@ class LocalImpacts {
     double time;  ///< τ [s] from the start of the step
   };
 
-  /// Whether a point of `c` (of the context's contacts) overlaps or is within the slop.
-  bool touching(const StepContext& ctx, const Contact& c) const;
   /// Whether contact `c` (of the context's contacts) can push during the sub-step from its start
   /// state: a point touching, or closing its gap within the sub-step.
   bool engaged(const StepContext& ctx, const Contact& c) const;
@@ -78,7 +76,9 @@ class LocalImpacts {
   bool search_after(StepContext& ctx, double tau);
 
   std::vector<Pending> pending_;
-  // classify's times of impact of a block of pairs, on several threads.
+  // classify's block of pairs apart (indices into the context's pairs) and their times of
+  // impact, on several threads.
+  std::vector<std::uint32_t> apart_;
   std::vector<std::optional<double>> times_;
   // Who owns a body's contacts this step, one role per body. A body's contacts follow it: those
   // of a body in the solver are the contact solver's (resting, or impacts handed over as

@@ -2,6 +2,7 @@
 // A contact constraint between two shapes, as the solver keeps it from one step to the next.
 
 #include <cstdint>
+#include <span>
 
 #include "engine/collision/manifold.hpp"
 #include "engine/collision/shape_pair.hpp"
@@ -64,6 +65,15 @@ struct ContactPointState {
   AnchorKind anchor_a = AnchorKind::kFixed;  ///< in the room left after the id
   AnchorKind anchor_b = AnchorKind::kFixed;
 };
+
+/// Whether one of `points` overlaps or is apart by at most `slop` [m]: its contact holds the
+/// shapes together, where one whose points are all farther apart closes a gap.
+inline bool touches(std::span<const ContactPointState> points, double slop) {
+  for (const ContactPointState& p : points) {
+    if (p.depth > -slop) return true;
+  }
+  return false;
+}
 
 /// Sets the arms of `p` [m], from A's and B's centre of mass to the point, for a contact whose
 /// normal is `normal`.

@@ -49,10 +49,13 @@ struct StepContext {
   std::optional<Ballistic> motion;     ///< the paths from `start` under its accelerations
 
   // Collisions.
-  WorldShapes world_start;              ///< the shapes placed at the start of h
-  WorldBounds end_bounds;               ///< their boxes at the end of h, along `motion`
-  std::span<const ShapePair> pairs;     ///< the candidate pairs the contacts are found for (in a
-                                        ///< sub-step, without its impact pairs)
+  WorldShapes world_start;           ///< the shapes placed at the start of h
+  WorldBounds end_bounds;            ///< their boxes at the end of h, along `motion`
+  std::span<const ShapePair> pairs;  ///< the candidate pairs the contacts are found for (in a
+                                     ///< sub-step, without its impact pairs)
+  /// Per pair: 1 when its contact touches (touches(), within Settings::linear_slop), set with
+  /// the contacts.
+  std::vector<std::uint8_t> touching_pairs;
   std::vector<ShapePair> impact_pairs;  ///< resolved at the end of the sub-step, at its t_c
   ContactSet contacts;                  ///< resting and persistent, solved over the sub-step
   ContactSet speculative_contacts;      ///< impacts on resting bodies, this step only
