@@ -17,7 +17,18 @@ void StepRunner::step(StepContext& c, double dt) {
   c.impacts.clear();
   c.impacts_this_step = 0;
   // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
-  for (double remaining = dt; remaining > 0.0;) remaining -= run_pass(c, kSubStepPass, remaining);
+  double remaining = dt - run_pass(c, kSubStepPass, dt);
+  // The impact that stopped the local pass is resolved by now: the rest of the step is tried as
+  // one local pass again, once, rather than a sub-step per impact (each costs a whole step). A
+  // failed try leaves the state as it was, and its impacts are not kept.
+  if (remaining > 0.0 && runs_local_pass(c)) {
+    const std::size_t logged = c.impacts.size();
+    const int counted = c.impacts_this_step;
+    if (run_pass(c, kLocalPass, remaining) > 0.0) return;
+    c.impacts.resize(logged);
+    c.impacts_this_step = counted;
+  }
+  while (remaining > 0.0) remaining -= run_pass(c, kSubStepPass, remaining);
 }
 
 double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
