@@ -38,7 +38,8 @@ class CollisionDetection {
 
   /// The context's contacts: those of its candidate pairs at the start placement and state,
   /// sorted by key; a point whose pair and features were among the warm starts (sorted by key)
-  /// starts with their impulses times the warm-start scale.
+  /// starts with their impulses times the warm-start scale. Marks in the context's touching_pairs
+  /// each pair whose contact touches.
   void find_contacts(StepContext& ctx);
 
   double margin() const { return margin_; }
