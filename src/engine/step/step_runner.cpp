@@ -36,6 +36,9 @@ double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
   c.h = h;
   c.start = c.state;
   c.impact_pairs.clear();
+  // A local pass that could not finish may have handed impacts over as speculative contacts:
+  // they were made for its own step, and their pairs' impacts are the sub-steps' to find now.
+  c.speculative_contacts.clear();
   const std::span<const Stage> stages = step_stages();
   for (std::size_t i = 0; i < stages.size(); ++i) {
     const Stage& stage = stages[i];
