@@ -18,9 +18,9 @@ void StepRunner::step(StepContext& c, double dt) {
   c.impacts_this_step = 0;
   // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
   double remaining = dt - run_pass(c, kSubStepPass, dt);
-  // The impact that stopped the local pass is resolved by now: the rest of the step is tried as
-  // one local pass again, once, rather than a sub-step per impact (each costs a whole step). A
-  // failed try leaves the state as it was, and its impacts are not kept.
+  // The first sub-step has resolved the step's first impact: the rest of the step is tried as one
+  // local pass again, once, rather than a sub-step per impact (each costs a whole step). A failed
+  // try leaves the state as it was, and its impacts are not kept.
   if (remaining > 0.0 && runs_local_pass(c)) {
     const std::size_t logged = c.impacts.size();
     const int counted = c.impacts_this_step;
