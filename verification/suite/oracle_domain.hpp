@@ -55,15 +55,15 @@ std::optional<OracleReference> oracle_reference(CheckList& list, const std::stri
 /// the same scene at the same instants and options (accuracy, peers) share its solution.
 class OracleReferences {
  public:
-  /// oracle_reference's answer; a reference solved before for the same scene name, duration,
-  /// instants and options is given again, its row added to `list` again, without solving.
+  /// oracle_reference's answer; a reference solved before for the same scene name, instants
+  /// (which end at the scene's duration) and options is given again, its row added to `list`
+  /// again, without solving.
   std::optional<OracleReference> find(CheckList& list, const std::string& name, const Scene& scene,
                                       std::span<const double> times, const OracleOptions& options);
 
  private:
   struct Entry {
     std::string name;
-    double duration;
     std::vector<double> times;
     OracleOptions options;
     OracleReference reference;
