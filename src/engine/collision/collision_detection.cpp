@@ -122,37 +122,37 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   manifolds_.resize(kCollidedPairsPerBlock);
   counts_.resize(kCollidedPairsPerBlock);
   slots_.resize(kCollidedPairsPerBlock);
-  warm_start_of_.resize(kCollidedPairsPerBlock);
-  auto old = previous.begin();
   for (std::size_t first = 0; first < pairs.size(); first += kCollidedPairsPerBlock) {
     const std::size_t size = std::min(kCollidedPairsPerBlock, pairs.size() - first);
-    const auto each_pair = [size](const auto& work) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, kCollidedPairsPerTask),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t i = r.begin(); i < r.end(); ++i) work(i);
-                        });
+    const auto each_range = [size](const auto& work) {
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, size, kCollidedPairsPerTask),
+          [&](const tbb::blocked_range<std::size_t>& r) { work(r.begin(), r.end()); });
     };
-    each_pair([&](std::size_t i) {
-      const ShapePair& p = pairs[first + i];
-      manifolds_[i] = collide(world.geometry(p.first), world.geometry(p.second), margin_);
-      counts_[i] = static_cast<std::uint8_t>(manifolds_[i].count);
+    each_range([&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const ShapePair& p = pairs[first + i];
+        manifolds_[i] = collide(world.geometry(p.first), world.geometry(p.second), margin_);
+        counts_[i] = static_cast<std::uint8_t>(manifolds_[i].count);
+      }
     });
     contacts.reserve(std::span(counts_).first(size), std::span(slots_).first(size));
-    // previous is sorted by key, and so are the pairs: one forward scan finds each pair's first
-    // warm start.
-    for (std::size_t i = 0; i < size; ++i) {
-      const std::uint64_t pair = WarmStart::pair_key(pairs[first + i]);
-      while (old != previous.end() && old->pair() < pair) ++old;
-      warm_start_of_[i] = old;
-    }
-    each_pair([&](std::size_t i) {
-      if (slots_[i].contact == ContactSlot::kNone) return;
-      const ShapePair& p = pairs[first + i];
-      Contact& c = contacts.place(slots_[i]);
-      fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
-      warm_start_points(warm_start_of_[i], previous.end(), WarmStart::pair_key(p), impulse_scale,
-                        contacts.points(c));
-      touching[first + i] = touches(contacts.points(c), slop);
+    each_range([&](std::size_t begin, std::size_t end) {
+      // previous is sorted by key, and so are the pairs: a search for the range's first pair,
+      // then one forward scan, finds each pair's first warm start.
+      auto old = std::lower_bound(
+          previous.begin(), previous.end(), WarmStart::pair_key(pairs[first + begin]),
+          [](const WarmStart& w, std::uint64_t pair) { return w.pair() < pair; });
+      for (std::size_t i = begin; i < end; ++i) {
+        if (slots_[i].contact == ContactSlot::kNone) continue;
+        const ShapePair& p = pairs[first + i];
+        Contact& c = contacts.place(slots_[i]);
+        fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
+        const std::uint64_t pair = WarmStart::pair_key(p);
+        while (old != previous.end() && old->pair() < pair) ++old;
+        warm_start_points(old, previous.end(), pair, impulse_scale, contacts.points(c));
+        touching[first + i] = touches(contacts.points(c), slop);
+      }
     });
   }
 }

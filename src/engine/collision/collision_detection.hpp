@@ -50,7 +50,6 @@ class CollisionDetection {
   std::vector<ContactManifold> manifolds_;  // per pair of a block of find_contacts
   std::vector<std::uint8_t> counts_;        // per pair of the block: its number of points
   std::vector<ContactSlot> slots_;          // per pair of the block: where its contact goes
-  std::vector<std::vector<WarmStart>::const_iterator> warm_start_of_;  // per pair of the block
 };
 
 }  // namespace gp

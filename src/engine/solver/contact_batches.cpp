@@ -16,6 +16,10 @@ namespace {
 // Colours a large island's contacts take; a contact that finds all of them taken by its bodies
 // goes to one more, whose contacts are solved one after the other.
 constexpr std::size_t kColours = 64;
+// Contacts or bodies whose build is checked by a thread at a time (a few nanoseconds each, a task
+// about a microsecond to hand out), and how many make the check worth sharing out.
+constexpr std::size_t kCheckedPerTask = 2048;
+constexpr std::size_t kParallelChecks = 8192;
 
 }  // namespace
 
@@ -60,12 +64,26 @@ bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmS
               built_splitting_.coloured_above == splitting.coloured_above;
   // Pairs are unique and the points kept in the contacts' order: each contact's points finding
   // its own pair where they were kept makes the two lists of contacts the same.
-  for (std::size_t i = 0; same && i < contacts.size(); ++i) {
-    const Contact& c = contacts[i];
-    const std::uint64_t pair = WarmStart::pair_key({c.shape_a, c.shape_b});
-    for (int k = 0; k < c.count(); ++k) same = same && last_kept[c.first_point + k].pair() == pair;
-  }
-  for (BodyId b = 0; same && b < bodies; ++b) same = (movable_[b] != 0) == movable(inertia, b);
+  const auto pairs_kept = [&](std::size_t first, std::size_t last, bool kept) {
+    for (std::size_t i = first; kept && i < last; ++i) {
+      const Contact& c = contacts[i];
+      const std::uint64_t pair = WarmStart::pair_key({c.shape_a, c.shape_b});
+      for (int k = 0; k < c.count(); ++k)
+        kept = kept && last_kept[c.first_point + k].pair() == pair;
+    }
+    return kept;
+  };
+  const auto movable_kept = [&](std::size_t first, std::size_t last, bool kept) {
+    for (auto b = static_cast<BodyId>(first); kept && b < last; ++b) {
+      kept = (movable_[b] != 0) == movable(inertia, b);
+    }
+    return kept;
+  };
+  const auto both = [](bool a, bool b) { return a && b; };
+  same = same &&
+         reduce_blocks(contacts.size(), kCheckedPerTask, contacts.size() < kParallelChecks, true,
+                       pairs_kept, both) &&
+         reduce_blocks(bodies, kCheckedPerTask, bodies < kParallelChecks, true, movable_kept, both);
   if (same) return true;
   built_contacts_ = contacts.size();
   reserve_for(movable_, bodies);

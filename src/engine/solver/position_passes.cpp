@@ -123,11 +123,6 @@ void move_by_contact_impulses(const ContactBatches& batches, const ContactSet& c
   });
 }
 
-void RotationCache::reset(std::size_t bodies) {
-  angle_.assign(bodies, std::numeric_limits<double>::quiet_NaN());
-  rotation_.resize(bodies);
-}
-
 namespace {
 
 // The arm [m], now, from a body's centre of mass to its deepest point inside the other body at
@@ -165,15 +160,8 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   int iterations = limits.iterations;
   constexpr double kBaumgarte = 0.2;      // fraction of the excess overlap removed per pass
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
-  rotations.reset(s.angle.size());
   const auto turn = [&](BodyId b) { return s.angle[b] - detected.angle[b]; };
-  // The rotations of the bodies in contact that do not move, found before the passes: contacts
-  // solved on different threads share them, and only read them then.
-  for (const Contact& c : contacts) {
-    for (const BodyId b : {c.body_a, c.body_b}) {
-      if (!movable(inertia, b)) rotations.rotate(b, turn(b), Vec2::Zero());
-    }
-  }
+  rotations.reset(inertia, s, turn);
   const auto turned_with = [&](BodyId b) {
     return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
   };
