@@ -102,7 +102,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   reserve_for(touching, pairs.size());
   touching.assign(pairs.size(), 0);
   if (one_thread()) {
-    // previous is sorted by key, and so are the pairs: one forward scan matches them.
+    // previous is sorted by pair, and so are the pairs: one forward scan matches them.
     auto old = previous.begin();
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const ShapePair& p = pairs[i];
@@ -138,7 +138,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     });
     contacts.reserve(std::span(counts_).first(size), std::span(slots_).first(size));
     each_range([&](std::size_t begin, std::size_t end) {
-      // previous is sorted by key, and so are the pairs: a search for the range's first pair,
+      // previous is sorted by pair, and so are the pairs: a search for the range's first pair,
       // then one forward scan, finds each pair's first warm start.
       auto old = std::lower_bound(
           previous.begin(), previous.end(), WarmStart::pair_key(pairs[first + begin]),

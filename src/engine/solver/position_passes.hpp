@@ -33,14 +33,15 @@ void move_by_contact_impulse(const ContactSet& contacts, const Contact& c,
                              const BodyInertia& inertia, double duration, MotionState& s);
 
 /// The rotations of bodies by an angle each (in the position passes, the angle each has turned
-/// since its contacts were found), each computed only when first asked for, and after a small
-/// turn updated without trigonometry: most contact points of discs need none, and position passes
-/// turn bodies by tiny angles.
+/// since its contacts were found): a moving body's computed only when first asked for, and after a
+/// small turn updated without trigonometry (most contact points of discs need none, and position
+/// passes turn bodies by tiny angles); a body that does not move has its own computed at reset.
 class RotationCache {
  public:
-  /// Forgets every rotation, sized for the bodies of `s`, but those of the bodies the passes do not
-  /// move, each turned by `turn(body)` [rad], found at once: the contacts solved on different
-  /// threads share such bodies, and then only read their rotations.
+  /// Sizes the cache for the bodies of `s` and forgets every rotation; then computes the rotation
+  /// of each body the passes do not move, by `turn(body)` [rad]: contacts solved on different
+  /// threads share such a body, and only read its rotation (its turn is finite: scenes and edits
+  /// give a static or kinematic body only finite angles and speeds).
   template <typename Turn>
   void reset(const BodyInertia& inertia, const MotionState& s, const Turn& turn) {
     const std::size_t bodies = s.angle.size();
