@@ -51,7 +51,12 @@ class RotationCache {
                [&](std::size_t first, std::size_t last) {
                  for (auto b = static_cast<BodyId>(first); b < last; ++b) {
                    angle_[b] = std::numeric_limits<double>::quiet_NaN();
-                   if (!movable(inertia, b)) rotate(b, turn(b), Vec2::Zero());
+                   if (movable(inertia, b)) continue;
+                   // A body that has not turned (every static one) needs no trigonometry:
+                   // cos(+0) and sin(+0) are 1 and +0, the identity's.
+                   const double t = turn(b);
+                   angle_[b] = t;
+                   rotation_[b] = t == 0.0 && !std::signbit(t) ? Rotation() : Rotation(t);
                  }
                });
   }
