@@ -63,12 +63,14 @@ void fill_contact(const ShapePair& pair, const BodyShapes& shapes, const Contact
 }
 
 // Starts each of `points`, of the contact of the pair whose key is `pair`, from the impulses of
-// the warm start with its features, scaled by `scale`; `same` is the first warm start of pairs
-// not before `pair`.
-void warm_start_points(std::vector<WarmStart>::const_iterator same,
+// the warm start with its features, scaled by `scale`. The warm starts are sorted by pair, and
+// the pairs visited in that order: `next` moves forward to the first warm start of pairs not
+// before `pair`, where the next pair's search starts.
+void warm_start_points(std::vector<WarmStart>::const_iterator& next,
                        std::vector<WarmStart>::const_iterator end, std::uint64_t pair, double scale,
                        std::span<ContactPointState> points) {
-  for (; same != end && same->pair() == pair; ++same) {
+  while (next != end && next->pair() < pair) ++next;
+  for (auto same = next; same != end && same->pair() == pair; ++same) {
     for (ContactPointState& q : points) {
       if (same->features() == q.id.key()) {
         q.normal_impulse = scale * same->normal;
@@ -102,16 +104,14 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   reserve_for(touching, pairs.size());
   touching.assign(pairs.size(), 0);
   if (one_thread()) {
-    // previous is sorted by pair, and so are the pairs: one forward scan matches them.
     auto old = previous.begin();
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const ShapePair& p = pairs[i];
       const ContactManifold m = collide(world.geometry(p.first), world.geometry(p.second), margin_);
       if (m.count == 0) continue;
       Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
-      const std::uint64_t pair = WarmStart::pair_key(p);
-      while (old != previous.end() && old->pair() < pair) ++old;
-      warm_start_points(old, previous.end(), pair, impulse_scale, contacts.points(c));
+      warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale,
+                        contacts.points(c));
       touching[i] = touches(contacts.points(c), slop);
     }
     return;
@@ -138,8 +138,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     });
     contacts.reserve(std::span(counts_).first(size), std::span(slots_).first(size));
     each_range([&](std::size_t begin, std::size_t end) {
-      // previous is sorted by pair, and so are the pairs: a search for the range's first pair,
-      // then one forward scan, finds each pair's first warm start.
+      // A search for the range's first pair, then one forward scan (warm_start_points).
       auto old = std::lower_bound(
           previous.begin(), previous.end(), WarmStart::pair_key(pairs[first + begin]),
           [](const WarmStart& w, std::uint64_t pair) { return w.pair() < pair; });
@@ -148,9 +147,8 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
         const ShapePair& p = pairs[first + i];
         Contact& c = contacts.place(slots_[i]);
         fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
-        const std::uint64_t pair = WarmStart::pair_key(p);
-        while (old != previous.end() && old->pair() < pair) ++old;
-        warm_start_points(old, previous.end(), pair, impulse_scale, contacts.points(c));
+        warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale,
+                          contacts.points(c));
         touching[first + i] = touches(contacts.points(c), slop);
       }
     });
