@@ -29,42 +29,77 @@ void assemble_dense(const ContactSet& contacts, const BodyInertia& inertia,
 
 // K of the island of scratch.rows, sparse, into scratch.k_sparse: each movable body adds its share
 // to the entries of every two points on it (body_coupling), so that K holds only what bodies
-// share.
+// share. Built column by column in place: a 100-row pyramid's K has 600,000 entries, and making
+// it from a list of them (Eigen's setFromTriplets, which sorts a copy) took 0.1 s of that
+// island's first solve of 0.3 s.
 void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
                      IslandScratch& scratch) {
+  using End = IslandScratch::End;
+  const auto n = static_cast<std::uint32_t>(scratch.rows.size());
   scratch.ends.clear();
-  for (std::uint32_t i = 0; i < scratch.rows.size(); ++i) {
+  for (std::uint32_t i = 0; i < n; ++i) {
     const Contact& c = contacts[scratch.rows[i].contact];
     const ContactPointState& p = contacts.points(c)[scratch.rows[i].point];
     if (movable(inertia, c.body_a)) scratch.ends.push_back({c.body_a, i, 1.0, p.normal_arm_a});
     if (movable(inertia, c.body_b)) scratch.ends.push_back({c.body_b, i, -1.0, p.normal_arm_b});
   }
-  std::sort(scratch.ends.begin(), scratch.ends.end(),
-            [](const IslandScratch::End& e, const IslandScratch::End& f) {
-              return e.body != f.body ? e.body < f.body : e.row < f.row;
-            });
-  scratch.entries.clear();
-  const auto normal = [&](const IslandScratch::End& e) -> const Vec2& {
-    return contacts[scratch.rows[e.row].contact].normal;
-  };
-  for (auto first = scratch.ends.begin(); first != scratch.ends.end();) {
-    const BodyId body = first->body;
-    const auto last = std::find_if(first, scratch.ends.end(),
-                                   [&](const IslandScratch::End& e) { return e.body != body; });
-    for (auto e = first; e != last; ++e) {
-      for (auto f = first; f != last; ++f) {
-        scratch.entries.emplace_back(
-            e->row, f->row,
-            e->sign * f->sign *
-                body_coupling(inertia.inverse_mass[body], inertia.inverse_moment[body],
-                              normal(*e).dot(normal(*f)), e->arm, f->arm));
-      }
+  std::sort(scratch.ends.begin(), scratch.ends.end(), [](const End& e, const End& f) {
+    return e.body != f.body ? e.body < f.body : e.row < f.row;
+  });
+  // Each end's body's ends, [first, last) in `ends`, and each row's ends, by body.
+  scratch.row_ends.assign(n, {});
+  std::size_t entries = 0;
+  for (std::uint32_t first = 0; first < scratch.ends.size();) {
+    std::uint32_t last = first;
+    while (last < scratch.ends.size() && scratch.ends[last].body == scratch.ends[first].body)
+      ++last;
+    for (std::uint32_t e = first; e < last; ++e) {
+      scratch.ends[e].first = first;
+      scratch.ends[e].last = last;
+      IslandScratch::RowEnds& own = scratch.row_ends[scratch.ends[e].row];
+      own.end[own.count++] = e;
     }
+    entries += std::size_t{last - first} * (last - first);
     first = last;
   }
-  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
-  scratch.k_sparse.resize(n, n);
-  scratch.k_sparse.setFromTriplets(scratch.entries.begin(), scratch.entries.end());
+  // Entry (e.row, f.row) of the body of ends e and f, f being its column's.
+  const auto share = [&](const End& e, const End& f) {
+    const Vec2& n_e = contacts[scratch.rows[e.row].contact].normal;
+    const Vec2& n_f = contacts[scratch.rows[f.row].contact].normal;
+    return e.sign * f.sign *
+           body_coupling(inertia.inverse_mass[e.body], inertia.inverse_moment[e.body], n_e.dot(n_f),
+                         e.arm, f.arm);
+  };
+  SparseK& k = scratch.k_sparse;
+  k.resize(n, n);
+  k.reserve(static_cast<Eigen::Index>(entries));
+  for (std::uint32_t column = 0; column < n; ++column) {
+    k.startVec(column);
+    const IslandScratch::RowEnds& own = scratch.row_ends[column];
+    if (own.count == 0) continue;
+    const End& f = scratch.ends[own.end[0]];
+    std::uint32_t e = f.first;
+    if (own.count == 1) {
+      for (; e < f.last; ++e) k.insertBack(scratch.ends[e].row, column) = share(scratch.ends[e], f);
+      continue;
+    }
+    // The rows of the points on both bodies (the column's own, its contact's other point) take
+    // a share from each.
+    const End& g = scratch.ends[own.end[1]];
+    std::uint32_t o = g.first;
+    while (e < f.last || o < g.last) {
+      const std::uint32_t row_e = e < f.last ? scratch.ends[e].row : n;
+      const std::uint32_t row_o = o < g.last ? scratch.ends[o].row : n;
+      if (row_e < row_o) {
+        k.insertBack(row_e, column) = share(scratch.ends[e++], f);
+      } else if (row_o < row_e) {
+        k.insertBack(row_o, column) = share(scratch.ends[o++], g);
+      } else {
+        k.insertBack(row_e, column) = share(scratch.ends[e++], f) + share(scratch.ends[o++], g);
+      }
+    }
+  }
+  k.finalize();
 }
 
 // Each point's w₀, its normal velocity less its target, and λ₀, its normal impulse, of the island
@@ -175,7 +210,7 @@ void release_large(IslandScratch& scratch) {
   // Moved-from temporaries take the room with them; `= {}` would keep a vector's capacity.
   scratch.rows = std::vector<IslandScratch::Row>();
   scratch.ends = std::vector<IslandScratch::End>();
-  scratch.entries = std::vector<Eigen::Triplet<double>>();
+  scratch.row_ends = std::vector<IslandScratch::RowEnds>();
   SparseK().swap(scratch.k_sparse);  // assigning an empty matrix would keep its entries' room
   scratch.residual = Eigen::VectorXd();
   scratch.initial = Eigen::VectorXd();

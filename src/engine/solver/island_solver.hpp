@@ -30,20 +30,26 @@ struct IslandScratch {
     std::uint32_t contact;
     std::uint32_t point;
   };
-  // A point's end on one of its movable bodies: its place in K's rows, and its sign (A +, B −)
-  // and arm crossed with the normal [m] there.
+  // A point's end on one of its movable bodies: its place in K's rows, its sign (A +, B −) and
+  // arm crossed with the normal [m] there, and where that body's ends are in `ends`.
   struct End {
     BodyId body;
     std::uint32_t row;
     double sign;
     double arm;
+    std::uint32_t first = 0, last = 0;
+  };
+  // A point's ends in `ends`, by body.
+  struct RowEnds {
+    std::uint32_t end[2];
+    std::uint32_t count;
   };
   std::vector<Row> rows;  // the island's points
   // 1/kg: effective-mass matrix of the island's points, dense for an island of at most
   // kDenseIslandPoints, else sparse (from its entries, body by body).
   Eigen::MatrixXd k_dense;
   std::vector<End> ends;  // the points' ends, by body
-  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<RowEnds> row_ends;
   SparseK k_sparse;
   Eigen::VectorXd residual;  // m/s: w₀, each point's normal velocity less its target
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far

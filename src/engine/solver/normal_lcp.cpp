@@ -56,7 +56,9 @@ void order_points(const Eigen::Ref<const Eigen::MatrixXd>& k, NormalLcpScratch& 
 void order_points(const SparseK& k, NormalLcpScratch& scratch) {
   if (!scratch.sparse) scratch.sparse = std::make_unique<SparseLcpScratch>();
   SparseLcpScratch& sparse = *scratch.sparse;
-  sparse.ordering(k, sparse.to_point);
+  // K is symmetric and stored whole: its lower triangle alone spares the ordering forming K + Kᵀ
+  // (a transposed copy and a sum of 600,000 entries in a 100-row pyramid), for the same pattern.
+  sparse.ordering(k.selfadjointView<Eigen::Lower>(), sparse.to_point);
   sparse.to_position = sparse.to_point.inverse();
   sparse.k_ordered = k.twistedBy(sparse.to_position);
   sparse.factored_positions.clear();
