@@ -32,9 +32,6 @@ constexpr std::size_t kCollidedPairsPerTask = 256;
 // slot, count): 1.8 MB. The threads wait for each other twice a block: blocks of 4096 pairs made
 // many_pyramids' narrowphase on two threads a sixth slower.
 constexpr std::size_t kCollidedPairsPerBlock = 64 * kCollidedPairsPerTask;
-// Fewer pairs are collided on one thread: a second one gains them little, and its slots would
-// outweigh their contacts many times over.
-constexpr std::size_t kParallelPairs = 1024;
 
 AnchorKind anchor_kind(const ShapeRecord& shape) {
   if (shape.centred_disc()) return AnchorKind::kCentredDisc;
@@ -107,7 +104,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   std::vector<std::uint8_t>& touching = ctx.touching_pairs;
   reserve_for(touching, pairs.size());
   touching.assign(pairs.size(), 0);
-  if (one_thread() || pairs.size() < kParallelPairs) {
+  if (one_thread()) {
     auto old = previous.begin();
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const ShapePair& p = pairs[i];
