@@ -8,30 +8,9 @@
 
 namespace gp {
 
-namespace {
-
-// K of the island of scratch.rows, dense, into scratch.k_dense: every entry, each from the bodies
-// its two points share (normal_coupling).
-void assemble_dense(const ContactSet& contacts, const BodyInertia& inertia,
-                    IslandScratch& scratch) {
-  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
-  auto k = scratch.k_dense.topLeftCorner(n, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Contact& ci = contacts[scratch.rows[i].contact];
-    const ContactPointState& pi = contacts.points(ci)[scratch.rows[i].point];
-    for (Eigen::Index j = 0; j <= i; ++j) {
-      const Contact& cj = contacts[scratch.rows[j].contact];
-      k(i, j) = k(j, i) =
-          normal_coupling(ci, pi, cj, contacts.points(cj)[scratch.rows[j].point], inertia);
-    }
-  }
-}
-
-// K of the island of scratch.rows, sparse, into scratch.k_sparse: each movable body adds its share
-// to the entries of every two points on it (body_coupling), so that K holds only what bodies
-// share. Built column by column in place: a 100-row pyramid's K has 600,000 entries, and making
-// it from a list of them (Eigen's setFromTriplets, which sorts a copy) took 0.1 s of that
-// island's first solve of 0.3 s.
+// Built column by column in place: a 100-row pyramid's K has 600,000 entries, and making it from a
+// list of them (Eigen's setFromTriplets, which sorts a copy) took 0.1 s of that island's first
+// solve of 0.3 s.
 void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
                      IslandScratch& scratch) {
   using End = IslandScratch::End;
@@ -83,8 +62,8 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
       for (; e < f.last; ++e) k.insertBack(scratch.ends[e].row, column) = share(scratch.ends[e], f);
       continue;
     }
-    // The rows of the points on both bodies (the column's own, its contact's other point) take
-    // a share from each.
+    // The rows of the points on both of the column's bodies (its own, its contact's other point)
+    // take a share from each.
     const End& g = scratch.ends[own.end[1]];
     std::uint32_t o = g.first;
     while (e < f.last || o < g.last) {
@@ -100,6 +79,25 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
     }
   }
   k.finalize();
+}
+
+namespace {
+
+// K of the island of scratch.rows, dense, into scratch.k_dense: every entry, each from the bodies
+// its two points share (normal_coupling).
+void assemble_dense(const ContactSet& contacts, const BodyInertia& inertia,
+                    IslandScratch& scratch) {
+  const auto n = static_cast<Eigen::Index>(scratch.rows.size());
+  auto k = scratch.k_dense.topLeftCorner(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Contact& ci = contacts[scratch.rows[i].contact];
+    const ContactPointState& pi = contacts.points(ci)[scratch.rows[i].point];
+    for (Eigen::Index j = 0; j <= i; ++j) {
+      const Contact& cj = contacts[scratch.rows[j].contact];
+      k(i, j) = k(j, i) =
+          normal_coupling(ci, pi, cj, contacts.points(cj)[scratch.rows[j].point], inertia);
+    }
+  }
 }
 
 // Each point's w₀, its normal velocity less its target, and λ₀, its normal impulse, of the island

@@ -59,6 +59,13 @@ struct IslandScratch {
   NormalLcpScratch lcp;
 };
 
+/// K, the effective-mass matrix of the island of scratch.rows, sparse, into scratch.k_sparse
+/// [1/kg]: each movable body adds its share to the entries of every two points on it
+/// (body_coupling), so that K holds only what bodies share; normal_coupling gives each entry alone.
+/// For islands of more than kDenseIslandPoints points.
+void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
+                     IslandScratch& scratch);
+
 /// Scratch for solve_small_islands, kept by the caller so that a step reuses the room of the
 /// last.
 struct DirectSolveScratch {
