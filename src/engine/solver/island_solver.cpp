@@ -25,7 +25,6 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
   std::sort(scratch.ends.begin(), scratch.ends.end(), [](const End& e, const End& f) {
     return e.body != f.body ? e.body < f.body : e.row < f.row;
   });
-  // Each end's body's ends, [first, last) in `ends`, and each row's ends, by body.
   scratch.row_ends.assign(n, {});
   std::size_t entries = 0;
   for (std::uint32_t first = 0; first < scratch.ends.size();) {
@@ -33,10 +32,8 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
     while (last < scratch.ends.size() && scratch.ends[last].body == scratch.ends[first].body)
       ++last;
     for (std::uint32_t e = first; e < last; ++e) {
-      scratch.ends[e].first = first;
-      scratch.ends[e].last = last;
-      IslandScratch::RowEnds& own = scratch.row_ends[scratch.ends[e].row];
-      own.end[own.count++] = e;
+      IslandScratch::RowEnds& row = scratch.row_ends[scratch.ends[e].row];
+      row.side[row.count++] = {e, first, last};
     }
     entries += std::size_t{last - first} * (last - first);
     first = last;
@@ -54,27 +51,25 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
   k.reserve(static_cast<Eigen::Index>(entries));
   for (std::uint32_t column = 0; column < n; ++column) {
     k.startVec(column);
-    const IslandScratch::RowEnds& own = scratch.row_ends[column];
-    if (own.count == 0) continue;
-    const End& f = scratch.ends[own.end[0]];
-    std::uint32_t e = f.first;
-    if (own.count == 1) {
-      for (; e < f.last; ++e) k.insertBack(scratch.ends[e].row, column) = share(scratch.ends[e], f);
-      continue;
-    }
+    const IslandScratch::RowEnds& row = scratch.row_ends[column];
+    if (row.count == 0) continue;
     // The rows of the points on both of the column's bodies (its own, its contact's other point)
-    // take a share from each.
-    const End& g = scratch.ends[own.end[1]];
+    // take a share from each; a column of one body has an empty second side.
+    const IslandScratch::RowEnds::Side f = row.side[0];
+    const IslandScratch::RowEnds::Side g =
+        row.count == 2 ? row.side[1] : IslandScratch::RowEnds::Side{};
+    std::uint32_t e = f.first;
     std::uint32_t o = g.first;
     while (e < f.last || o < g.last) {
       const std::uint32_t row_e = e < f.last ? scratch.ends[e].row : n;
       const std::uint32_t row_o = o < g.last ? scratch.ends[o].row : n;
       if (row_e < row_o) {
-        k.insertBack(row_e, column) = share(scratch.ends[e++], f);
+        k.insertBack(row_e, column) = share(scratch.ends[e++], scratch.ends[f.own]);
       } else if (row_o < row_e) {
-        k.insertBack(row_o, column) = share(scratch.ends[o++], g);
+        k.insertBack(row_o, column) = share(scratch.ends[o++], scratch.ends[g.own]);
       } else {
-        k.insertBack(row_e, column) = share(scratch.ends[e++], f) + share(scratch.ends[o++], g);
+        k.insertBack(row_e, column) = share(scratch.ends[e++], scratch.ends[f.own]) +
+                                      share(scratch.ends[o++], scratch.ends[g.own]);
       }
     }
   }

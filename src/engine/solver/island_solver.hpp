@@ -30,19 +30,21 @@ struct IslandScratch {
     std::uint32_t contact;
     std::uint32_t point;
   };
-  // A point's end on one of its movable bodies: its place in K's rows, its sign (A +, B −) and
-  // arm crossed with the normal [m] there, and where that body's ends are in `ends`.
+  // A point's end on one of its movable bodies: its place in K's rows, and its sign (A +, B −)
+  // and arm crossed with the normal [m] there.
   struct End {
     BodyId body;
     std::uint32_t row;
     double sign;
     double arm;
-    std::uint32_t first = 0, last = 0;
   };
-  // A point's ends in `ends`, by body.
+  // A point's ends, by body: each its own place in `ends` and its body's ends there, [first, last).
   struct RowEnds {
-    std::uint32_t end[2];
-    std::uint32_t count;
+    struct Side {
+      std::uint32_t own = 0, first = 0, last = 0;
+    };
+    Side side[2];
+    std::uint32_t count = 0;
   };
   std::vector<Row> rows;  // the island's points
   // 1/kg: effective-mass matrix of the island's points, dense for an island of at most

@@ -50,13 +50,11 @@ class RotationCache {
     for_blocks(bodies, kBodiesPerTask, bodies < kParallelBodies,
                [&](std::size_t first, std::size_t last) {
                  for (auto b = static_cast<BodyId>(first); b < last; ++b) {
-                   angle_[b] = std::numeric_limits<double>::quiet_NaN();
-                   if (movable(inertia, b)) continue;
-                   // A body that has not turned (every static one) needs no trigonometry:
-                   // cos(+0) and sin(+0) are 1 and +0, the identity's.
-                   const double t = turn(b);
-                   angle_[b] = t;
-                   rotation_[b] = t == 0.0 && !std::signbit(t) ? Rotation() : Rotation(t);
+                   if (movable(inertia, b)) {
+                     angle_[b] = std::numeric_limits<double>::quiet_NaN();
+                   } else {
+                     place(b, turn(b));
+                   }
                  }
                });
   }
@@ -73,14 +71,17 @@ class RotationCache {
   }
   /// `v` turned by `angle` [rad], the current angle of `body`.
   Vec2 rotate(BodyId body, double angle, const Vec2& v) {
-    if (angle_[body] != angle) {
-      angle_[body] = angle;
-      rotation_[body] = Rotation(angle);
-    }
+    if (angle_[body] != angle) place(body, angle);
     return rotation_[body].rotate(v);
   }
 
  private:
+  void place(BodyId body, double angle) {
+    angle_[body] = angle;
+    // A body that has not turned (every static one) needs no trigonometry: cos(+0) and sin(+0)
+    // are 1 and +0, the identity's.
+    rotation_[body] = angle == 0.0 && !std::signbit(angle) ? Rotation() : Rotation(angle);
+  }
   // Bodies a thread resets at a time (a few nanoseconds each, a task about a microsecond to hand
   // out), and how many make it worth sharing out.
   static constexpr std::size_t kBodiesPerTask = 4096;
