@@ -53,27 +53,33 @@ std::vector<std::uint32_t> in_order(std::size_t n) {
 // Islands of more contacts than this are coloured in these tests.
 constexpr std::size_t kColouredAbove = 4096;
 
-// The contact indices in the order one thread visits them, once `batches` is built for `g`,
-// whose contacts' points were kept at the end of the last pass as `last_kept`.
+using Visit = gp::ContactBatches::Visit;
+
+// The contact indices in the order one thread visits them as `visit` says, once `batches` is
+// built for `g`, whose contacts' points were kept at the end of the last pass as `last_kept`.
 std::vector<std::uint32_t> visits(gp::ContactBatches& batches, const Graph& g,
                                   gp::IslandSplitting splitting,
-                                  const std::vector<gp::WarmStart>& last_kept = {}) {
+                                  const std::vector<gp::WarmStart>& last_kept = {},
+                                  Visit visit = Visit::kInOrder) {
   batches.build(g.contacts, last_kept, g.inertia, g.positions, splitting);
   std::vector<std::uint32_t> order;
   tbb::task_arena(1).execute([&] {
-    batches.run([&](std::uint32_t i) {
-      order.push_back(i);
-      return 0.0;
-    });
+    batches.run(
+        [&](std::uint32_t i) {
+          order.push_back(i);
+          return 0.0;
+        },
+        visit);
   });
   return order;
 }
 
 // The same, built afresh.
 std::vector<std::uint32_t> visits(const Graph& g,
-                                  gp::IslandSplitting splitting = {0, kColouredAbove}) {
+                                  gp::IslandSplitting splitting = {0, kColouredAbove},
+                                  Visit visit = Visit::kInOrder) {
   gp::ContactBatches batches;
-  return visits(batches, g, splitting);
+  return visits(batches, g, splitting, {}, visit);
 }
 
 TEST_CASE("An island under the colouring threshold is visited in the contacts' own order") {
@@ -91,6 +97,18 @@ TEST_CASE("Islands joined only through a static body are separate, each in its o
   // island's contacts in their order, the island of the lower root first.
   const Graph g(5, {{3, 0}, {1, 0}, {3, 4}, {2, 1}, {4, 0}, {2, 0}});
   CHECK(visits(g) == std::vector<std::uint32_t>{1, 3, 5, 0, 2, 4});
+}
+
+TEST_CASE("Interleaved, each island's contacts are visited in two halves, taken by turns") {
+  // The islands above, {1, 3, 5} and {0, 2, 4}: halves {1, 3} and {5}, {0, 2} and {4}; one
+  // thread takes both islands at once, and each is interleaved on its own.
+  const Graph g(5, {{3, 0}, {1, 0}, {3, 4}, {2, 1}, {4, 0}, {2, 0}});
+  CHECK(visits(g, {0, kColouredAbove}, Visit::kInterleaved) ==
+        std::vector<std::uint32_t>{1, 5, 3, 0, 4, 2});
+  // A chain's six contacts, every two in a row sharing a body: none of the pairs visited in a
+  // row does.
+  CHECK(visits(chain(6), {0, kColouredAbove}, Visit::kInterleaved) ==
+        std::vector<std::uint32_t>{0, 3, 1, 4, 2, 5});
 }
 
 TEST_CASE("A large island is visited colour after colour, no colour sharing a movable body") {

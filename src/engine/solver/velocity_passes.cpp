@@ -348,12 +348,13 @@ double solve_contact_once(ContactSet& contacts, const Contact& c, const BodyIner
 
 namespace {
 
-template <typename Order>
-int solve_velocities_in(const Order& order, ContactSet& contacts, const BodyInertia& inertia,
+// `pass(solve)` runs `solve` over the contacts, returning the largest value it returned.
+template <typename Pass>
+int solve_velocities_in(const Pass& pass, ContactSet& contacts, const BodyInertia& inertia,
                         int iterations, double tolerance, MotionState& s) {
   for (int i = 0; i < iterations;) {
     const double largest_change =
-        order.run([&](std::uint32_t k) { return solve_once(contacts, contacts[k], inertia, s); });
+        pass([&](std::uint32_t k) { return solve_once(contacts, contacts[k], inertia, s); });
     ++i;
     // A pass that changed the velocities by at most the tolerance leaves the next about as
     // little to do (none at all when it changed nothing).
@@ -389,13 +390,16 @@ void apply_restitution_in(const Order& order, ContactSet& contacts, const BodyIn
 
 int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int iterations,
                      double tolerance, MotionState& s) {
-  return solve_velocities_in(ContactsInOrder(contacts), contacts, inertia, iterations, tolerance,
-                             s);
+  const ContactsInOrder order(contacts);
+  return solve_velocities_in([&](const auto& solve) { return order.run(solve); }, contacts, inertia,
+                             iterations, tolerance, s);
 }
 
 int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
                      const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s) {
-  return solve_velocities_in(batches, contacts, inertia, limits.iterations, limits.tolerance, s);
+  return solve_velocities_in(
+      [&](const auto& solve) { return batches.run(solve, ContactBatches::Visit::kInterleaved); },
+      contacts, inertia, limits.iterations, limits.tolerance, s);
 }
 
 void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {

@@ -111,8 +111,9 @@ struct VelocityLimits {
   double tolerance;
 };
 
-/// solve_velocities in the order of `batches` of `contacts`, on the threads of the current task
-/// arena; the same result on any number of them.
+/// solve_velocities in the order of `batches` of `contacts`, each task's contacts in two
+/// interleaved halves (ContactBatches::Visit), on the threads of the current task arena; the same
+/// result on any number of them.
 int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
                      const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s);
 
