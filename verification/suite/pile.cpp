@@ -21,7 +21,8 @@ namespace {
 constexpr double kReferenceStep = 2.5e-4;
 
 // What the engine was measured to reach on settle50 against the reference (full run, the scene's
-// dt), per integrator, and the bounds (at most ×10 above): as PileDifferences.
+// dt), per integrator, and the bounds, wide enough for the band a chaotic pile lands in: as
+// PileDifferences.
 struct PileBound {
   IntegratorKind integrator;
   PileDifferences bound;
