@@ -86,13 +86,15 @@ class ContactBatches {
   template <typename Solve>
   double run(const Solve& solve, Visit visit = Visit::kInOrder) const {
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
+      // In order, the tasks of a block follow one another in order_: one loop over them all.
+      if (visit == Visit::kInOrder) {
+        for (std::uint32_t e = first == 0 ? 0 : task_end_[first - 1]; e < task_end_[last - 1]; ++e)
+          largest = std::max(largest, solve(order_[e]));
+        return largest;
+      }
       for (std::size_t t = first; t < last; ++t) {
         const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
         const std::uint32_t end = task_end_[t];
-        if (visit == Visit::kInOrder) {
-          for (std::uint32_t e = begin; e < end; ++e) largest = std::max(largest, solve(order_[e]));
-          continue;
-        }
         const std::uint32_t middle = begin + (end - begin + 1) / 2;
         for (std::uint32_t e = begin, f = middle; e < middle; ++e, ++f) {
           largest = std::max(largest, solve(order_[e]));
