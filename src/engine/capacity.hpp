@@ -10,10 +10,15 @@
 
 namespace gp {
 
+/// The room a buffer grown for `count` elements gets: an eighth more.
+inline std::size_t grown_room(std::size_t count) {
+  return count + count / 8;
+}
+
 /// Makes room in `buffer` for `count` elements, and an eighth more when it must grow.
 template <typename T>
 void reserve_for(std::vector<T>& buffer, std::size_t count) {
-  if (buffer.capacity() < count) buffer.reserve(count + count / 8);
+  if (buffer.capacity() < count) buffer.reserve(grown_room(count));
 }
 
 /// Appends `value` to `buffer`, which grows by an eighth when full.

@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 #include <cstdint>
 
+#include "engine/capacity.hpp"
 #include "engine/solver/contact_set.hpp"
+#include "heap_counter.hpp"
 
 namespace {
 namespace test_contact_set {
@@ -69,6 +71,27 @@ TEST_CASE("erase_if keeps the others in order with their points", "[contact_set]
   CHECK(set[1].first_point == 2);
   CHECK(set.points(set[1])[0].normal_impulse == 3.0);
   CHECK(set.block(set[1]).k11 == 0.0);
+}
+
+TEST_CASE("a pile's contacts appended from none take a few allocations and keep an eighth more",
+          "[contact_set]") {
+  constexpr std::size_t kContacts = 10000;
+  const std::size_t heap_before = gp::test::heap_in_use();
+  const long allocations_before = gp::test::allocations();
+  gp::ContactSet set;
+  for (std::size_t i = 0; i < kContacts; ++i) set.append(2);
+  // Doubling: about log2(10,000) = 14 allocations for each of the contacts, points and blocks;
+  // growing by an eighth each time would take about 60 each.
+  CHECK(gp::test::allocations() - allocations_before <= 3 * 16);
+  set.fit_room();
+  const std::size_t per_contact =
+      sizeof(gp::Contact) + 2 * sizeof(gp::ContactPointState) + sizeof(gp::NormalBlock);
+  // Doubled to 16,384 it would hold 1.6 times what it needs; the allocator maps each of the three
+  // arrays in whole pages.
+  CHECK(gp::test::heap_in_use() - heap_before <=
+        gp::grown_room(kContacts) * per_contact + 3 * 4096);
+  CHECK(set.size() == kContacts);
+  CHECK(set.points(set[kContacts - 1]).data() == set.points(set[0]).data() + 2 * kContacts - 2);
 }
 
 }  // namespace test_contact_set

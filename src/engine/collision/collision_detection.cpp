@@ -115,6 +115,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
                         contacts.points(c));
       touching[i] = touches(contacts.points(c), slop);
     }
+    contacts.fit_room();
     return;
   }
   // On several threads, a block of pairs at a time (so that the slots take a fixed room rather
@@ -154,6 +155,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
       }
     });
   }
+  contacts.fit_room();
 }
 
 }  // namespace gp

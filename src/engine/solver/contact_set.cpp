@@ -1,19 +1,32 @@
 #include "engine/solver/contact_set.hpp"
 
+#include <algorithm>
+
 #include "engine/capacity.hpp"
 
 namespace gp {
 
 namespace {
 
-// Room for at least `count` entries, grown by an eighth more than asked: grown as contacts come
-// rather than for every candidate pair, of which many make none.
+// Room for at least `count` entries, twice the room held when it must grow: a step that finds a
+// pile's contacts from none would otherwise copy them at every eighth more (many_pyramids' first
+// step: 90 ms of 0.49 s).
 template <typename T>
 void room_for(std::vector<T>& entries, std::size_t count) {
   if (entries.size() >= count) return;
-  // Reserved first: resize alone would double the capacity.
-  reserve_for(entries, count);
+  entries.reserve(std::max(count, 2 * entries.size()));
   entries.resize(entries.capacity());
+}
+
+// The room of `entries` cut to grown_room of the `used` first ones, if it holds more than that.
+template <typename T>
+void fit(std::vector<T>& entries, std::size_t used) {
+  if (entries.size() <= grown_room(used)) return;
+  std::vector<T> fitted;
+  fitted.reserve(grown_room(used));
+  fitted.assign(entries.begin(), entries.begin() + static_cast<std::ptrdiff_t>(used));
+  fitted.resize(fitted.capacity());
+  entries.swap(fitted);
 }
 
 }  // namespace
@@ -36,6 +49,15 @@ void ContactSet::grow() {
   room_for(contacts_, size_);
   room_for(points_, point_count_);
   room_for(blocks_, block_count_);
+  grown_ = true;
+}
+
+void ContactSet::fit_room() {
+  if (!grown_) return;
+  grown_ = false;
+  fit(contacts_, size_);
+  fit(points_, point_count_);
+  fit(blocks_, block_count_);
 }
 
 Contact& ContactSet::append(int count) {

@@ -24,7 +24,8 @@ struct ContactSlot {
 /// Contacts in the order they were appended (the solvers' order), each with its `count` points
 /// stored one after the other from Contact::first_point, and the normal blocks of the two-point
 /// contacts. Its arrays keep their room from step to step: a contact is initialised once, where
-/// it is placed, and on whichever thread places it.
+/// it is placed, and on whichever thread places it. They double when they must grow, and
+/// fit_room cuts them back once a step's contacts are all in.
 class ContactSet {
  public:
   std::size_t size() const { return size_; }
@@ -57,6 +58,11 @@ class ContactSet {
   /// The contact at `slot` (of reserve), with its points and block value-initialised. Contacts
   /// of different slots may be placed on different threads at once.
   Contact& place(const ContactSlot& slot);
+
+  /// Cuts the arrays to an eighth more than they hold if they grew since the last call: a step
+  /// that finds a pile's contacts from none doubles them rather than copying them at every
+  /// eighth more, and memory per body counts the room kept.
+  void fit_room();
 
   /// The block of a two-point contact, filled in where it is kept.
   const NormalBlock& block(const Contact& c) const { return blocks_[c.block]; }
@@ -103,6 +109,7 @@ class ContactSet {
   std::size_t size_ = 0;
   std::size_t point_count_ = 0;
   std::size_t block_count_ = 0;
+  bool grown_ = false;  // since the last fit_room
 };
 
 }  // namespace gp
