@@ -99,6 +99,44 @@ TEST_CASE("Prepared and warm-started in one pass, a resting box gets its masses 
   CHECK(before.velocity[1].y() == 0.0);
 }
 
+TEST_CASE("Bodies moved by their velocity changes move as their contacts' impulses move them",
+          "[via:DD:impulseV][via:DD:torque]") {
+  RestingBox box;
+  // A third body, free and touching nothing, which must not be written at all.
+  box.inertia.inverse_mass.push_back(1.0);
+  box.inertia.inverse_moment.push_back(6.0);
+  box.state.resize(3);
+  box.state.position[2] = {-0.0, 3.0};
+  box.state.angle[2] = 1.0;
+  box.state.velocity[2] = {1.0, 2.0};
+  box.state.angle[1] = 0.5;
+  gp::ContactPointState* points = box.contacts.points(box.contacts[0]).data();
+  points[0].normal_impulse = 0.3;
+  points[1].normal_impulse = 0.2;
+  points[0].tangent_impulse = 0.05;
+  points[1].tangent_impulse = -0.02;
+  gp::BodyVelocities before;
+  before.take(box.state);
+  gp::warm_start(box.contacts, box.inertia, box.state);
+  gp::MotionState by_contacts = box.state;
+  gp::move_by_contact_impulses(box.contacts, box.inertia, kStep, by_contacts);
+  gp::move_by_velocity_changes(before, kStep, box.state);
+  // By hand: the normal impulses 0.5 N·s lift the 1 kg box by 0.5 h; the tangent's, 0.03 N·s
+  // along (−1, 0), move it by −0.03 h; their moments about the centre, −0.5 · 0.3 + 0.5 · 0.2
+  // (normal) and −0.5 · 0.03 (tangent), turn it by 6 · (−0.065) h.
+  CHECK(box.state.position[1].x() == Approx(-0.03 * kStep).epsilon(1e-13));
+  CHECK(box.state.position[1].y() == Approx(0.5 + 0.5 * kStep).epsilon(1e-15));
+  CHECK(box.state.angle[1] == Approx(0.5 - 6.0 * 0.065 * kStep).epsilon(1e-15));
+  for (int b : {1, 2}) {
+    CHECK(box.state.position[b].x() == Approx(by_contacts.position[b].x()).margin(1e-16));
+    CHECK(box.state.position[b].y() == Approx(by_contacts.position[b].y()).epsilon(1e-15));
+    CHECK(box.state.angle[b] == Approx(by_contacts.angle[b]).epsilon(1e-15));
+  }
+  CHECK(std::signbit(box.state.position[2].x()));
+  CHECK(box.state.angle[2] == 1.0);
+  CHECK(box.state.position[0] == gp::Vec2::Zero());
+}
+
 TEST_CASE("A rotation turned by its series agrees with one built from the new angle",
           "[via:DD:angDisp]") {
   const gp::Rotation rotation(2.5);

@@ -17,6 +17,7 @@ void ContactSolver::prepare(StepContext& c) {
   batches_.build(c.contacts, c.warm_starts, c.inertia, c.start.position,
                  {static_cast<std::size_t>(c.settings.island_part_contacts),
                   static_cast<std::size_t>(c.settings.coloured_island_contacts)});
+  before_impulses_.take(c.state);
   prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
                          c.state);
 }
@@ -46,8 +47,7 @@ void ContactSolver::apply_restitution(StepContext& c) {
 }
 
 void ContactSolver::move_by_impulses(StepContext& c) {
-  move_by_contact_impulses(batches_, c.contacts, c.inertia,
-                           c.integrator->impulse_position_share() * c.h, c.state);
+  move_by_velocity_changes(before_impulses_, c.integrator->impulse_position_share() * c.h, c.state);
 }
 
 void ContactSolver::solve_speculative(StepContext& c) {

@@ -40,6 +40,7 @@ class ContactSolver {
   DirectSolveScratch islands_;
   SpeculativeScratch speculative_;
   PositionCorrection positions_;
+  BodyVelocities before_impulses_;  ///< taken in prepare, for move_by_impulses
 };
 
 }  // namespace gp

@@ -23,10 +23,24 @@ namespace gp {
 void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s);
 
-/// move_by_contact_impulses in the order of `batches` of `contacts`, on the threads of the current
-/// task arena.
-void move_by_contact_impulses(const ContactBatches& batches, const ContactSet& contacts,
-                              const BodyInertia& inertia, double duration, MotionState& s);
+/// The bodies' velocities at one instant, for move_by_velocity_changes to measure against.
+struct BodyVelocities {
+  std::vector<Vec2> linear;     ///< m/s
+  std::vector<double> angular;  ///< rad/s
+
+  void take(const MotionState& s) {
+    linear = s.velocity;
+    angular = s.angular_velocity;
+  }
+};
+
+/// move_by_contact_impulses of every contact at once, for velocities that only the contacts'
+/// impulses have changed since `before`: each body's velocity change is then the sum of its
+/// contacts' J/m (DD:impulseV) and J r × n/I (DD:torque), which moves and turns it over
+/// `duration` [s] (DD:linVel, DD:linDisp, DD:angVel, DD:angDisp). One visit a body instead of one a
+/// contact point; a body whose velocities did not change is not written. On the threads of the
+/// current task arena.
+void move_by_velocity_changes(const BodyVelocities& before, double duration, MotionState& s);
 
 /// move_by_contact_impulses for contact `c` of `contacts` alone.
 void move_by_contact_impulse(const ContactSet& contacts, const Contact& c,
