@@ -20,6 +20,11 @@ CC=clang CXX=clang++ cmake -S . -B build-clang -DCMAKE_BUILD_TYPE=Release > /dev
 cmake --build build-clang -j2 --target gamephysics_cli > /dev/null
 tests/determinism/same_csv_gcc_clang.sh build/bin/gamephysics build-clang/bin/gamephysics scenes \
   build/compilers || compilers_status=$?
+# And a pile solved colour by colour, whose one-point contacts go four at a time (AVX2).
+mkdir -p build/compilers/coloured
+cp build/scenes/bench/rain1000_coloured.json build/compilers/coloured/
+tests/determinism/same_csv_gcc_clang.sh build/bin/gamephysics build-clang/bin/gamephysics \
+  build/compilers/coloured build/compilers || compilers_status=$?
 # The figures of README.md and docs/ against this report (tests/docs/README.md); not after --quick
 # or --out, whose report is not the full one in out/report that they come from.
 figures_status=0

@@ -45,8 +45,8 @@ void check_same(const gp::WorldShape& a, const gp::WorldShape& b) {
             std::bit_cast<std::uint64_t>(expected.separation));
   };
   check(gp::max_separation(hull_a, hull_b));
-  for (const gp::BoxLanes lanes : {gp::BoxLanes::kOne, gp::BoxLanes::kTwo, gp::BoxLanes::kFour}) {
-    if (lanes > gp::box_lanes()) continue;
+  for (const gp::Lanes lanes : {gp::Lanes::kOne, gp::Lanes::kTwo, gp::Lanes::kFour}) {
+    if (lanes > gp::widest_lanes()) continue;
     INFO("a box's edges taken " << gp::box_lanes_name(lanes));
     check(gp::max_separation_of_boxes(hull_a.vertices.first<4>(), hull_a.normals.first<4>(),
                                       hull_b.vertices.first<4>(), lanes));
@@ -61,7 +61,7 @@ TEST_CASE("This machine's box separation takes four edges at once where the CPU 
 #else
   const bool avx2 = false;
 #endif
-  CHECK((gp::box_lanes() == gp::BoxLanes::kFour) == avx2);
+  CHECK((gp::widest_lanes() == gp::Lanes::kFour) == avx2);
 }
 
 TEST_CASE("Two boxes' separation, edges one, two or four at a time, is its definition to the bit",

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks the benchmark scenes that `scenes/generate.py --bench DIR` wrote into DIR against Box2D
 3's definitions (shared/benchmarks.c), computed here by hand: body counts, corner and top boxes,
-step counts at 60 Hz, and the tumbler's turning speed."""
+step counts at 60 Hz, and the tumbler's turning speed; and the coloured copies against their
+originals."""
 import json
 import math
 import sys
@@ -45,6 +46,11 @@ check("tumbler bodies", len(tumbler["bodies"]), 1 + 45 * 45)
 check("tumbler turning speed", tumbler["bodies"][0]["angular_velocity"], 25 * math.pi / 180)
 check("tumbler first box", tumbler["bodies"][1]["position"], [-9.0, 1.0])
 check("tumbler steps", round(tumbler["duration"] / tumbler["dt"]), 750)
+
+rain = load("rain1000_coloured.json")
+shipped = json.loads((Path(__file__).resolve().parents[2] / "scenes" / "rain1000.json").read_text())
+check("rain1000_coloured bodies are rain1000's", rain["bodies"] == shipped["bodies"], True)
+check("rain1000_coloured colours islands over", rain["coloured_island_contacts"], 1)
 
 print("\n".join(failures) if failures else "the benchmark scenes follow Box2D 3's definitions")
 sys.exit(1 if failures else 0)

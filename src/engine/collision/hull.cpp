@@ -4,17 +4,10 @@
 #include <array>
 #include <limits>
 
-// The AVX2 path is built for x86-64 with GCC or Clang, and taken where the CPU has AVX2.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define GP_BOX_LANES_AVX2 1
-#else
-#define GP_BOX_LANES_AVX2 0
-#endif
-
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if GP_BOX_LANES_AVX2
+#if GP_LANES_AVX2
 #include <immintrin.h>
 #endif
 
@@ -102,7 +95,7 @@ EdgeSeparation two_edges_at_a_time(std::span<const Vec2, 4> vertices,
 
 #endif
 
-#if GP_BOX_LANES_AVX2
+#if GP_LANES_AVX2
 
 // Four points (x0, y0, x1, y1, x2, y2, x3, y3) from `first` into x = (x0, x1, x2, x3) and
 // y = (y0, y1, y2, y3): unpacking the two halves gives (x0, x2, x1, x3), and the permutation puts
@@ -140,35 +133,15 @@ EdgeSeparation two_edges_at_a_time(std::span<const Vec2, 4> vertices,
 
 #endif
 
-BoxLanes widest_box_lanes() {
-#if GP_BOX_LANES_AVX2
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2")) return BoxLanes::kFour;
-#endif
-#if defined(__SSE2__)
-  return BoxLanes::kTwo;
-#else
-  return BoxLanes::kOne;
-#endif
-}
-
-// Asked once, when the program starts: max_separation reads it at every call. Read before then,
-// it is kOne, which gives the same bits.
-const BoxLanes widest_lanes = widest_box_lanes();
-
 }  // namespace
 
-BoxLanes box_lanes() {
-  return widest_lanes;
-}
-
-const char* box_lanes_name(BoxLanes lanes) {
+const char* box_lanes_name(Lanes lanes) {
   switch (lanes) {
-    case BoxLanes::kFour:
+    case Lanes::kFour:
       return "its edges four at a time (AVX2)";
-    case BoxLanes::kTwo:
+    case Lanes::kTwo:
       return "its edges two at a time (SSE2)";
-    case BoxLanes::kOne:
+    case Lanes::kOne:
       break;
   }
   return "its edges one at a time";
@@ -176,14 +149,14 @@ const char* box_lanes_name(BoxLanes lanes) {
 
 EdgeSeparation max_separation_of_boxes(std::span<const Vec2, 4> vertices,
                                        std::span<const Vec2, 4> normals,
-                                       std::span<const Vec2, 4> other, BoxLanes lanes) {
+                                       std::span<const Vec2, 4> other, Lanes lanes) {
   switch (lanes) {
-#if GP_BOX_LANES_AVX2
-    case BoxLanes::kFour:
+#if GP_LANES_AVX2
+    case Lanes::kFour:
       return four_edges_at_once(vertices, normals, other);
 #endif
 #if defined(__SSE2__)
-    case BoxLanes::kTwo:
+    case Lanes::kTwo:
       return two_edges_at_a_time(vertices, normals, other);
 #endif
     default:
@@ -196,7 +169,7 @@ EdgeSeparation max_separation(const Hull& reference, const Hull& other) {
   if (reference.count() == kBox && other.count() == kBox) {
     return max_separation_of_boxes(reference.vertices.first<kBox>(),
                                    reference.normals.first<kBox>(), other.vertices.first<kBox>(),
-                                   widest_lanes);
+                                   widest_lanes());
   }
   return max_separation_of(reference.vertices, reference.normals, other.vertices);
 }

@@ -7,6 +7,7 @@
 #include <span>
 #include <variant>
 
+#include "engine/lanes.hpp"
 #include "scene/shape.hpp"
 
 namespace gp {
@@ -54,21 +55,15 @@ struct EdgeSeparation {
 
 EdgeSeparation max_separation(const Hull& reference, const Hull& other);
 
-/// How many of a box's edges max_separation takes at a time against another box: one (the scalar
-/// loop), two (SSE2) or four (AVX2). Each gives the same edge and separation to the bit.
-enum class BoxLanes { kOne, kTwo, kFour };
-
-/// The widest way this build and CPU have, which max_separation takes.
-BoxLanes box_lanes();
-
 /// How `lanes` takes a box's edges, for --explain: "its edges four at a time (AVX2)".
-const char* box_lanes_name(BoxLanes lanes);
+const char* box_lanes_name(Lanes lanes);
 
-/// max_separation of a box against a box, `lanes` edges at a time (kFour only where box_lanes()
-/// is kFour, kTwo only where it is not kOne).
+/// max_separation of a box against a box, `lanes` edges at a time (kFour only where
+/// widest_lanes() is kFour, kTwo only where it is not kOne). Each gives the same edge and
+/// separation to the bit; max_separation takes the widest.
 EdgeSeparation max_separation_of_boxes(std::span<const Vec2, 4> vertices,
                                        std::span<const Vec2, 4> normals,
-                                       std::span<const Vec2, 4> other, BoxLanes lanes);
+                                       std::span<const Vec2, 4> other, Lanes lanes);
 
 /// The edge of `hull` whose normal is most nearly opposite `normal`: the edge that meets the
 /// reference edge with that normal.

@@ -85,6 +85,21 @@ class ContactBatches {
   /// says.
   template <typename Solve>
   double run(const Solve& solve, Visit visit = Visit::kInOrder) const {
+    return run(
+        solve,
+        [&](std::span<const std::uint32_t> colour) {
+          double largest = 0.0;
+          for (const std::uint32_t i : colour) largest = std::max(largest, solve(i));
+          return largest;
+        },
+        visit);
+  }
+
+  /// The same, but the contacts of a colour go to `solve_colour(contact indices)` a block at a
+  /// time, which returns the largest value over them: they share no movable body, so they may be
+  /// solved in any order, or several at once, with the same result.
+  template <typename Solve, typename SolveColour>
+  double run(const Solve& solve, const SolveColour& solve_colour, Visit visit) const {
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
       // In order, the tasks of a block follow one another in order_: one loop over them all.
       if (visit == Visit::kInOrder) {
@@ -103,6 +118,12 @@ class ContactBatches {
       }
       return largest;
     };
+    // A colour's tasks are one contact each, one after the other in order_.
+    const auto colour_tasks = [&](std::size_t first, std::size_t last, double largest) {
+      const std::uint32_t begin = first == 0 ? 0 : task_end_[first - 1];
+      return std::max(largest, solve_colour(std::span<const std::uint32_t>(
+                                   order_.data() + begin, task_end_[last - 1] - begin)));
+    };
     const bool alone = one_thread();
     double largest = 0.0;
     std::size_t first = 0;
@@ -111,11 +132,14 @@ class ContactBatches {
       if (first == last) continue;
       // An island or a part is a task of its own; a colour's contacts, each a task of tens of
       // nanoseconds, are handed out by the hundred, as each hand-out costs about a microsecond.
+      // The last colour takes the contacts that found every other taken, one after the other.
+      const bool colour = stage >= first_colour_stage_ && stage + 1 < stage_end_.size();
       const std::size_t grain = stage < first_colour_stage_ ? 1 : kContactsPerChunk;
       largest = std::max(largest, reduce_blocks(
                                       last - first, grain, alone, 0.0,
                                       [&](std::size_t a, std::size_t b, double l) {
-                                        return tasks(first + a, first + b, l);
+                                        return colour ? colour_tasks(first + a, first + b, l)
+                                                      : tasks(first + a, first + b, l);
                                       },
                                       [](double a, double b) { return std::max(a, b); }));
       first = last;

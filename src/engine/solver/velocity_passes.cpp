@@ -1,9 +1,12 @@
 #include "engine/solver/velocity_passes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 #include "engine/geometry/transform.hpp"
+#include "engine/solver/single_point_lanes.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
 #include "gamephysics/models/dd/torque.hpp"
@@ -395,10 +398,46 @@ int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int itera
                              iterations, tolerance, s);
 }
 
+namespace {
+
+// One pass over contacts of a colour, which share no movable body: the one-point ones gathered a
+// block at a time for solve_single_points, the others one by one. Returns the largest change.
+double solve_colour(ContactSet& contacts, std::span<const std::uint32_t> colour,
+                    const BodyInertia& inertia, MotionState& s, Lanes lanes) {
+  constexpr std::size_t kBlock = 128;
+  std::array<std::uint32_t, kBlock> single;
+  double largest = 0.0;
+  std::size_t held = 0;
+  for (const std::uint32_t i : colour) {
+    const Contact& c = contacts[i];
+    if (c.count() != 1) {
+      largest = std::max(largest, solve_once(contacts, c, inertia, s));
+      continue;
+    }
+    single[held++] = i;
+    if (held == kBlock) {
+      largest = std::max(largest, solve_single_points(contacts, single, inertia, s, lanes));
+      held = 0;
+    }
+  }
+  return std::max(largest,
+                  solve_single_points(contacts, std::span(single).first(held), inertia, s, lanes));
+}
+
+}  // namespace
+
 int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
                      const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s) {
+  const Lanes lanes = widest_lanes();
   return solve_velocities_in(
-      [&](const auto& solve) { return batches.run(solve, ContactBatches::Visit::kInterleaved); },
+      [&](const auto& solve) {
+        return batches.run(
+            solve,
+            [&](std::span<const std::uint32_t> colour) {
+              return solve_colour(contacts, colour, inertia, s, lanes);
+            },
+            ContactBatches::Visit::kInterleaved);
+      },
       contacts, inertia, limits.iterations, limits.tolerance, s);
 }
 

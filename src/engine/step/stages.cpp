@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/collision/hull.hpp"
+#include "engine/solver/single_point_lanes.hpp"
 #include "engine/solver/velocity_passes.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
@@ -202,7 +203,7 @@ constexpr std::array kStages{
             return std::string(
                        "1 point (vertex to edge) or 2 points (edge to edge), warm started; a box "
                        "against a box takes ") +
-                   box_lanes_name(box_lanes());
+                   box_lanes_name(widest_lanes());
           },
           find_contacts},
     Stage{"time of impact: local impacts", "IM:col2D GD:impulse", kLocalPass, collides,
@@ -255,9 +256,15 @@ constexpr std::array kStages{
           "DD:impulseV TM:NewtonThirdLawMot",
           kLocalPass | kSubStepPass, collides,
           [](const StepContext& c) {
-            return "resting and persistent contacts; at most " +
-                   std::to_string(c.settings.velocity_iterations) +
-                   " passes, ending once a pass changes no velocity by more than the tolerance";
+            std::string text = "resting and persistent contacts; at most " +
+                               std::to_string(c.settings.velocity_iterations) +
+                               " passes, ending once a pass changes no velocity by more than the "
+                               "tolerance";
+            if (c.settings.coloured_island_contacts > 0) {
+              text += "; the one-point contacts of a coloured island " +
+                      std::string(single_point_lanes_name(widest_lanes()));
+            }
+            return text;
           },
           on_contacts<&ContactSolver::solve_velocities>},
     Stage{"contact solver: restitution", "IM:col2D", kLocalPass | kSubStepPass, bounces,

@@ -1,0 +1,21 @@
+#pragma once
+// How many doubles the engine's SIMD paths take in one register on this build and CPU, asked once
+// when the program starts. Every path gives the same bits as the one-at-a-time loop it stands for.
+
+// The AVX2 paths are built for x86-64 with GCC or Clang, and taken where the CPU has AVX2.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define GP_LANES_AVX2 1
+#else
+#define GP_LANES_AVX2 0
+#endif
+
+namespace gp {
+
+/// One double at a time (the scalar loop), two (SSE2) or four (AVX2).
+enum class Lanes { kOne, kTwo, kFour };
+
+/// The widest this build and CPU have. Read before the program starts, it is kOne, which gives
+/// the same bits.
+Lanes widest_lanes();
+
+}  // namespace gp
