@@ -79,11 +79,27 @@ struct FourFields {
   return _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
 }
 
+// One body of each of four contacts: its velocity and inverse inertias.
+struct FourBodies {
+  Four velocity_x, velocity_y, angular_velocity, inverse_mass, inverse_moment;
+};
+
+// The bodies `ids` of state `s`, a lane each.
+[[gnu::target("avx2")]] inline FourBodies gather_bodies(const std::array<BodyId, 4>& ids,
+                                                        const BodyInertia& inertia,
+                                                        const MotionState& s) {
+  FourBodies body;
+  split(s.velocity[ids[0]], s.velocity[ids[1]], s.velocity[ids[2]], s.velocity[ids[3]],
+        body.velocity_x, body.velocity_y);
+  body.angular_velocity = gather(s.angular_velocity.data(), ids);
+  body.inverse_mass = gather(inertia.inverse_mass.data(), ids);
+  body.inverse_moment = gather(inertia.inverse_moment.data(), ids);
+  return body;
+}
+
 // The two bodies of four contacts, as PairMotion holds one contact's.
 struct FourPairs {
-  Four velocity_ax, velocity_ay, angular_velocity_a;
-  Four velocity_bx, velocity_by, angular_velocity_b;
-  Four inverse_mass_a, inverse_mass_b, inverse_moment_a, inverse_moment_b;
+  FourBodies a, b;
 };
 
 // A direction d (the normal or the tangent) of four points, with their arms crossed with it.
@@ -93,36 +109,38 @@ struct FourDirections {
 
 // PairMotion::velocity_along: (v_a − v_b)·d + ω_a arm_a − ω_b arm_b.
 [[gnu::target("avx2")]] inline Four along(const FourPairs& m, const FourDirections& d) {
-  const Four dot = _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(m.velocity_ax, m.velocity_bx), d.x),
-                                 _mm256_mul_pd(_mm256_sub_pd(m.velocity_ay, m.velocity_by), d.y));
-  return _mm256_sub_pd(_mm256_add_pd(dot, _mm256_mul_pd(m.angular_velocity_a, d.arm_a)),
-                       _mm256_mul_pd(m.angular_velocity_b, d.arm_b));
+  const Four dot = _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(m.a.velocity_x, m.b.velocity_x), d.x),
+                                 _mm256_mul_pd(_mm256_sub_pd(m.a.velocity_y, m.b.velocity_y), d.y));
+  return _mm256_sub_pd(_mm256_add_pd(dot, _mm256_mul_pd(m.a.angular_velocity, d.arm_a)),
+                       _mm256_mul_pd(m.b.angular_velocity, d.arm_b));
 }
 
-// `after` in the lanes of `where`, `before` in the others.
+// `after` in the lanes of `mask`, `before` in the others.
 [[gnu::target("avx2")]] inline Four where(Four mask, Four before, Four after) {
   return _mm256_blendv_pd(before, after, mask);
 }
 
-// PairMotion::push_along, in the lanes of `lanes` only.
+// The impulse j (dx, dy) at an arm whose cross product with the direction is `arm`, added to
+// `body` in the lanes of `lanes` (DD:impulseV, DD:torque). B takes −j: rounding is symmetric, so
+// each of its sums is the same to the bit as its subtraction of A's share in PairMotion.
+[[gnu::target("avx2")]] inline void take(FourBodies& body, Four dx, Four dy, Four arm, Four j,
+                                         Four lanes) {
+  const Four turn = _mm256_mul_pd(_mm256_mul_pd(j, arm), body.inverse_moment);
+  body.velocity_x =
+      where(lanes, body.velocity_x,
+            _mm256_add_pd(body.velocity_x, _mm256_mul_pd(_mm256_mul_pd(j, dx), body.inverse_mass)));
+  body.velocity_y =
+      where(lanes, body.velocity_y,
+            _mm256_add_pd(body.velocity_y, _mm256_mul_pd(_mm256_mul_pd(j, dy), body.inverse_mass)));
+  body.angular_velocity =
+      where(lanes, body.angular_velocity, _mm256_add_pd(body.angular_velocity, turn));
+}
+
+// PairMotion::push_along, in the lanes of `lanes` only: j d to A, −j d to B (TM:NewtonThirdLawMot).
 [[gnu::target("avx2")]] inline void push(FourPairs& m, const FourDirections& d, Four j,
                                          Four lanes) {
-  const Four ix = _mm256_mul_pd(j, d.x);
-  const Four iy = _mm256_mul_pd(j, d.y);
-  const Four turn_a = _mm256_mul_pd(_mm256_mul_pd(j, d.arm_a), m.inverse_moment_a);
-  const Four turn_b = _mm256_mul_pd(_mm256_mul_pd(j, d.arm_b), m.inverse_moment_b);
-  m.velocity_ax = where(lanes, m.velocity_ax,
-                        _mm256_add_pd(m.velocity_ax, _mm256_mul_pd(ix, m.inverse_mass_a)));
-  m.velocity_ay = where(lanes, m.velocity_ay,
-                        _mm256_add_pd(m.velocity_ay, _mm256_mul_pd(iy, m.inverse_mass_a)));
-  m.angular_velocity_a =
-      where(lanes, m.angular_velocity_a, _mm256_add_pd(m.angular_velocity_a, turn_a));
-  m.velocity_bx = where(lanes, m.velocity_bx,
-                        _mm256_sub_pd(m.velocity_bx, _mm256_mul_pd(ix, m.inverse_mass_b)));
-  m.velocity_by = where(lanes, m.velocity_by,
-                        _mm256_sub_pd(m.velocity_by, _mm256_mul_pd(iy, m.inverse_mass_b)));
-  m.angular_velocity_b =
-      where(lanes, m.angular_velocity_b, _mm256_sub_pd(m.angular_velocity_b, turn_b));
+  take(m.a, d.x, d.y, d.arm_a, j, lanes);
+  take(m.b, d.x, d.y, d.arm_b, _mm256_xor_pd(j, _mm256_set1_pd(-0.0)), lanes);
 }
 
 // solve_contact_once over the one-point contacts `four`, lane by lane: friction where it is above
@@ -148,17 +166,7 @@ struct FourDirections {
       _mm256_set_pd(c[3]->friction, c[2]->friction, c[1]->friction, c[0]->friction);
   const std::array<BodyId, 4> a{c[0]->body_a, c[1]->body_a, c[2]->body_a, c[3]->body_a};
   const std::array<BodyId, 4> b{c[0]->body_b, c[1]->body_b, c[2]->body_b, c[3]->body_b};
-  FourPairs m;
-  split(s.velocity[a[0]], s.velocity[a[1]], s.velocity[a[2]], s.velocity[a[3]], m.velocity_ax,
-        m.velocity_ay);
-  split(s.velocity[b[0]], s.velocity[b[1]], s.velocity[b[2]], s.velocity[b[3]], m.velocity_bx,
-        m.velocity_by);
-  m.angular_velocity_a = gather(s.angular_velocity.data(), a);
-  m.angular_velocity_b = gather(s.angular_velocity.data(), b);
-  m.inverse_mass_a = gather(inertia.inverse_mass.data(), a);
-  m.inverse_mass_b = gather(inertia.inverse_mass.data(), b);
-  m.inverse_moment_a = gather(inertia.inverse_moment.data(), a);
-  m.inverse_moment_b = gather(inertia.inverse_moment.data(), b);
+  FourPairs m{gather_bodies(a, inertia, s), gather_bodies(b, inertia, s)};
 
   const Four zero = _mm256_setzero_pd();
   // Not idle (solve_contact's idle): an impulse already, or a point closing faster than its target.
@@ -186,16 +194,16 @@ struct FourDirections {
   alignas(32) std::array<double, 4> change, normal_out, tangent_out, vax, vay, wa, vbx, vby, wb;
   _mm256_store_pd(
       change.data(),
-      _mm256_and_pd(_mm256_mul_pd(largest_step, _mm256_add_pd(m.inverse_mass_a, m.inverse_mass_b)),
+      _mm256_and_pd(_mm256_mul_pd(largest_step, _mm256_add_pd(m.a.inverse_mass, m.b.inverse_mass)),
                     busy));
   _mm256_store_pd(normal_out.data(), where(busy, normal_impulse, normal_total));
   _mm256_store_pd(tangent_out.data(), where(rubs, tangent_impulse, tangent_total));
-  _mm256_store_pd(vax.data(), m.velocity_ax);
-  _mm256_store_pd(vay.data(), m.velocity_ay);
-  _mm256_store_pd(wa.data(), m.angular_velocity_a);
-  _mm256_store_pd(vbx.data(), m.velocity_bx);
-  _mm256_store_pd(vby.data(), m.velocity_by);
-  _mm256_store_pd(wb.data(), m.angular_velocity_b);
+  _mm256_store_pd(vax.data(), m.a.velocity_x);
+  _mm256_store_pd(vay.data(), m.a.velocity_y);
+  _mm256_store_pd(wa.data(), m.a.angular_velocity);
+  _mm256_store_pd(vbx.data(), m.b.velocity_x);
+  _mm256_store_pd(vby.data(), m.b.velocity_y);
+  _mm256_store_pd(wb.data(), m.b.angular_velocity);
   double largest = 0.0;
   for (std::size_t l = 0; l < 4; ++l) {
     p[l]->normal_impulse = normal_out[l];
