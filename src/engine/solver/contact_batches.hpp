@@ -50,6 +50,9 @@ class ContactBatches {
  public:
   /// Contacts of a colour a thread takes at a time.
   static constexpr std::size_t kContactsPerChunk = 128;
+  /// A colour of fewer contacts is solved on one thread: sharing a colour costs the threads a
+  /// meeting of some microseconds, what a thread takes to solve about this many of its contacts.
+  static constexpr std::size_t kSharedColourContacts = 2048;
   /// The most halvings of an island: 64 parts.
   static constexpr int kMaxPartDepth = 6;
 
@@ -135,8 +138,9 @@ class ContactBatches {
       // The last colour takes the contacts that found every other taken, one after the other.
       const bool colour = stage >= first_colour_stage_ && stage + 1 < stage_end_.size();
       const std::size_t grain = stage < first_colour_stage_ ? 1 : kContactsPerChunk;
+      const bool small_colour = colour && last - first < kSharedColourContacts;
       largest = std::max(largest, reduce_blocks(
-                                      last - first, grain, alone, 0.0,
+                                      last - first, grain, alone || small_colour, 0.0,
                                       [&](std::size_t a, std::size_t b, double l) {
                                         return colour ? colour_tasks(first + a, first + b, l)
                                                       : tasks(first + a, first + b, l);
