@@ -8,7 +8,7 @@
 #include <emmintrin.h>
 #endif
 #if GP_LANES_AVX2
-#include <immintrin.h>
+#include "engine/avx2_lanes.hpp"
 #endif
 
 namespace gp {
@@ -97,15 +97,9 @@ EdgeSeparation two_edges_at_a_time(std::span<const Vec2, 4> vertices,
 
 #if GP_LANES_AVX2
 
-// Four points (x0, y0, x1, y1, x2, y2, x3, y3) from `first` into x = (x0, x1, x2, x3) and
-// y = (y0, y1, y2, y3): unpacking the two halves gives (x0, x2, x1, x3), and the permutation puts
-// its middle lanes back in order.
+// Four consecutive points from `first` into their x and y lanes.
 [[gnu::target("avx2")]] void split_lanes(const Vec2* first, __m256d& x, __m256d& y) {
-  constexpr int kMiddleSwapped = 0b11'01'10'00;
-  const __m256d low = _mm256_loadu_pd(first[0].data());
-  const __m256d high = _mm256_loadu_pd(first[2].data());
-  x = _mm256_permute4x64_pd(_mm256_unpacklo_pd(low, high), kMiddleSwapped);
-  y = _mm256_permute4x64_pd(_mm256_unpackhi_pd(low, high), kMiddleSwapped);
+  split_xy(_mm256_loadu_pd(first[0].data()), _mm256_loadu_pd(first[2].data()), x, y);
 }
 
 // The same, the four edges at once in the lanes of a 256-bit register, each lane with the SSE2

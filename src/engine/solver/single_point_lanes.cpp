@@ -7,7 +7,7 @@
 #include "engine/solver/velocity_passes.hpp"
 
 #if GP_LANES_AVX2
-#include <immintrin.h>
+#include "engine/avx2_lanes.hpp"
 #endif
 
 namespace gp {
@@ -49,17 +49,14 @@ struct FourFields {
           _mm256_permute2f128_pd(t0, t2, 0x31), _mm256_permute2f128_pd(t1, t3, 0x31)};
 }
 
-// Four vectors into their x and y: the two halves unpacked give (x0, x2, x1, x3), and the
-// permutation puts the middle lanes back in order.
+// Four vectors, anywhere, into their x and y lanes.
 [[gnu::target("avx2")]] inline void split(const Vec2& v0, const Vec2& v1, const Vec2& v2,
                                           const Vec2& v3, Four& x, Four& y) {
-  constexpr int kMiddleSwapped = 0b11'01'10'00;
-  const Four low = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v0.data())),
-                                        _mm_loadu_pd(v1.data()), 1);
-  const Four high = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v2.data())),
-                                         _mm_loadu_pd(v3.data()), 1);
-  x = _mm256_permute4x64_pd(_mm256_unpacklo_pd(low, high), kMiddleSwapped);
-  y = _mm256_permute4x64_pd(_mm256_unpackhi_pd(low, high), kMiddleSwapped);
+  split_xy(_mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v0.data())),
+                                _mm_loadu_pd(v1.data()), 1),
+           _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v2.data())),
+                                _mm_loadu_pd(v3.data()), 1),
+           x, y);
 }
 
 [[gnu::target("avx2")]] inline Four gather(const double* values, const std::array<BodyId, 4>& b) {
