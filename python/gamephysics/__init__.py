@@ -12,7 +12,8 @@ from typing import NamedTuple, Optional, Union
 import numpy as np
 
 from ._core import (BodyDef, BodyState, BodyType, InputError, Integrator, NumericalError, Scene,
-                    Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run, load_scene, models)
+                    Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run, load_scene, models,
+                    set_threads, threads)
 
 # So that `from gamephysics.models import dd` works: the submodules are made by the compiled part.
 sys.modules[__name__ + ".models"] = models
@@ -21,7 +22,7 @@ for _name in ("tm", "gd", "dd", "im"):
 
 __all__ = ["BodyDef", "BodyState", "BodyTrajectory", "BodyType", "InputError", "Integrator",
            "NumericalError", "Scene", "Settings", "Shape", "ShapeDef", "Space", "Trajectory",
-           "Wrench", "load_scene", "models", "oracle", "simulate"]
+           "Wrench", "load_scene", "models", "oracle", "set_threads", "simulate", "threads"]
 
 
 class BodyTrajectory(NamedTuple):

@@ -1,8 +1,8 @@
 // gamephysics._core: the engine for Python, bound rather than copied. The package gamephysics
 // (python/gamephysics/) re-exports it.
 #include "bindings.hpp"
-#include "scene/input_error.hpp"
 #include "engine/numerical_error.hpp"
+#include "scene/input_error.hpp"
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "GamePhysics: 2D rigid bodies after the GamePhysics SRS (Drasil).";
@@ -12,4 +12,5 @@ PYBIND11_MODULE(_core, m) {
   gp::python::bind_space(m);
   gp::python::bind_scenes(m);
   gp::python::bind_models(m);
+  gp::python::bind_threads(m);
 }

@@ -70,15 +70,17 @@ struct StateArrays {
   std::vector<std::string> names;
 };
 
-/// The engine's run of the scene at every output instant.
+/// The engine's run of the scene at every output instant, on the threads of set_threads.
 py::tuple run(const SceneFile& file) {
   const Scene& scene = file.scene;
   const std::unique_ptr<Space> space = build_space(scene);
   StateArrays arrays(scene);
   py::ssize_t k = 0;
-  run_scene(*space, scene, [&](double now) {
-    for (BodyId j = 0; j < arrays.bodies; ++j) arrays.store(k, now, j, space->state(j));
-    ++k;
+  on_engine_threads([&] {
+    run_scene(*space, scene, [&](double now) {
+      for (BodyId j = 0; j < arrays.bodies; ++j) arrays.store(k, now, j, space->state(j));
+      ++k;
+    });
   });
   return arrays.result();
 }

@@ -176,7 +176,9 @@ void bind_space_class(py::module_& m) {
       .def(py::init<const Settings&>(), py::arg("settings") = Settings{})
       .def("add_body", &Space::add_body, py::arg("body"),
            "Adds a body and returns its id (0, 1, ... in the order of adding).")
-      .def("step", &Space::step, py::arg("dt"), "Advances by dt [s] > 0.")
+      .def(
+          "step", [](Space& s, double dt) { on_engine_threads([&] { s.step(dt); }); },
+          py::arg("dt"), "Advances by dt [s] > 0, on the threads of set_threads.")
       .def_property_readonly("time", &Space::time, "t [s]")
       .def_property_readonly("body_count", &Space::body_count)
       .def("name", [](const Space& s, BodyId id) { return std::string(s.name(id)); })
