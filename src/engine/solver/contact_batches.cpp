@@ -52,6 +52,7 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   }
   part(contacts, inertia, positions, splitting.parted_above);
   first_colour_stage_ = stage_end_.size();
+  coloured_begin_ = coloured_end_ = 0;
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
 }
 
@@ -253,8 +254,12 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
   // contact of its movable bodies has. Static and kinematic bodies take any number of contacts
   // of a colour, as the solver only reads their motion.
   colours_.assign(bodies, 0);
-  colour_.resize(contacts.size());
-  std::array<std::uint32_t, kColours + 3> next{};  // counts, then starts
+  bucket_.resize(contacts.size());
+  // Contacts go to bucket 2k (colour k, one point) or 2k + 1 (colour k, two points): a colour's
+  // one-point contacts side by side, for SinglePointLanes. The contacts that found every colour
+  // taken go to the last bucket.
+  constexpr std::size_t kLastBucket = 2 * kColours;
+  std::array<std::uint32_t, kLastBucket + 3> next{};  // counts, then starts
   for (std::size_t r = 0; r < bodies; ++r) {
     if (!large(r)) continue;
     for (std::uint32_t e = islands_.island_start[r]; e < islands_.island_end[r]; ++e) {
@@ -263,15 +268,17 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
       const bool b = movable(inertia, c.body_b);
       const std::uint64_t taken = (a ? colours_[c.body_a] : 0) | (b ? colours_[c.body_b] : 0);
       const auto colour = static_cast<std::size_t>(std::countr_one(taken));
+      std::size_t bucket = kLastBucket;
       if (colour < kColours) {
         if (a) colours_[c.body_a] |= std::uint64_t{1} << colour;
         if (b) colours_[c.body_b] |= std::uint64_t{1} << colour;
+        bucket = 2 * colour + (c.count() == 1 ? 0 : 1);
       }
-      colour_[islands_.order[e]] = static_cast<std::uint8_t>(colour);
-      ++next[colour + 2];
+      bucket_[islands_.order[e]] = static_cast<std::uint8_t>(bucket);
+      ++next[bucket + 2];
     }
   }
-  // Counting sort by colour, each colour's contacts in the contacts' order.
+  // Counting sort by bucket, each bucket's contacts in the contacts' order.
   const auto base = static_cast<std::uint32_t>(order_.size());
   next[1] = base;
   for (std::size_t k = 2; k < next.size(); ++k) next[k] += next[k - 1];
@@ -280,20 +287,20 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
     if (!large(r)) continue;
     for (std::uint32_t e = islands_.island_start[r]; e < islands_.island_end[r]; ++e) {
       const std::uint32_t i = islands_.order[e];
-      order_[next[colour_[i] + 1]++] = i;
+      order_[next[bucket_[i] + 1]++] = i;
     }
   }
-  // next[k + 1] is now the end of colour k.
-  for (std::size_t k = 0; k <= kColours; ++k) {
-    const std::uint32_t begin = k == 0 ? base : next[k];
-    const std::uint32_t end = next[k + 1];
-    if (k < kColours) {
-      for (std::uint32_t e = begin; e < end; ++e) task_end_.push_back(e + 1);
-    } else if (end > begin) {
-      task_end_.push_back(end);
-    }
+  // next[k + 1] is now the end of bucket k: colour k ends at next[2k + 2].
+  for (std::size_t k = 0; k < kColours; ++k) {
+    const std::uint32_t begin = k == 0 ? base : next[2 * k];
+    const std::uint32_t end = next[2 * k + 2];
+    for (std::uint32_t e = begin; e < end; ++e) task_end_.push_back(e + 1);
     stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
   }
+  coloured_begin_ = base;
+  coloured_end_ = next[kLastBucket];
+  if (next[kLastBucket + 1] > coloured_end_) task_end_.push_back(next[kLastBucket + 1]);
+  stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
 }
 
 }  // namespace gp

@@ -76,6 +76,13 @@ class ContactBatches {
   /// The islands of the contacts build was given.
   const ContactIslands& islands() const { return islands_; }
 
+  /// The contacts of the colours, colour after colour, each colour's one-point contacts first
+  /// (but those that found every colour taken, solved one after the other): what run hands to
+  /// solve_colour, at its entries into this span.
+  std::span<const std::uint32_t> coloured() const {
+    return {order_.data() + coloured_begin_, order_.data() + coloured_end_};
+  }
+
   /// How a task's contacts are visited: in order, or in two interleaved halves (the first, the
   /// first past the middle, the second, ...). Contacts next to each other in the contacts' order
   /// often share a body (a shape's contacts follow one another), so that each solve that moves
@@ -90,7 +97,7 @@ class ContactBatches {
   double run(const Solve& solve, Visit visit = Visit::kInOrder) const {
     return run(
         solve,
-        [&](std::span<const std::uint32_t> colour) {
+        [&](std::size_t, std::span<const std::uint32_t> colour) {
           double largest = 0.0;
           for (const std::uint32_t i : colour) largest = std::max(largest, solve(i));
           return largest;
@@ -98,9 +105,10 @@ class ContactBatches {
         visit);
   }
 
-  /// The same, but the contacts of a colour go to `solve_colour(contact indices)` a block at a
-  /// time, which returns the largest value over them: they share no movable body, so they may be
-  /// solved in any order, or several at once, with the same result.
+  /// The same, but the contacts of a colour go to `solve_colour(entry, contact indices)` a block
+  /// at a time, `entry` being where the block starts in coloured(), which returns the largest
+  /// value over them: they share no movable body, so they may be solved in any order, or several
+  /// at once, with the same result.
   template <typename Solve, typename SolveColour>
   double run(const Solve& solve, const SolveColour& solve_colour, Visit visit) const {
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
@@ -124,8 +132,10 @@ class ContactBatches {
     // A colour's tasks are one contact each, one after the other in order_.
     const auto colour_tasks = [&](std::size_t first, std::size_t last, double largest) {
       const std::uint32_t begin = first == 0 ? 0 : task_end_[first - 1];
-      return std::max(largest, solve_colour(std::span<const std::uint32_t>(
-                                   order_.data() + begin, task_end_[last - 1] - begin)));
+      return std::max(largest,
+                      solve_colour(begin - coloured_begin_,
+                                   std::span<const std::uint32_t>(order_.data() + begin,
+                                                                  task_end_[last - 1] - begin)));
     };
     const bool alone = one_thread();
     double largest = 0.0;
@@ -185,7 +195,9 @@ class ContactBatches {
   std::vector<std::uint32_t> group_of_;     // per contact of a cut island: its group
   std::vector<std::uint32_t> group_start_;  // per group: its first entry in order_
   std::vector<std::uint64_t> colours_;      // per body: the colours its contacts took, as bits
-  std::vector<std::uint8_t> colour_;        // per contact of a large island: its colour
+  std::vector<std::uint8_t> bucket_;        // per contact of a large island: its colour's bucket
+  std::uint32_t coloured_begin_ = 0;        // the colours' entries in order_ (not the last one's)
+  std::uint32_t coloured_end_ = 0;
 };
 
 }  // namespace gp

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-
-#include "engine/solver/velocity_passes.hpp"
+#include <stdexcept>
 
 #if GP_LANES_AVX2
 #include "engine/avx2_lanes.hpp"
@@ -14,39 +13,60 @@ namespace gp {
 
 namespace {
 
-#if GP_LANES_AVX2
+// The fields packed, an array each.
+enum Field : std::size_t {
+  kNormalX,
+  kNormalY,
+  kFriction,
+  kNormalImpulse,
+  kTangentImpulse,
+  kTarget,
+  kNormalMass,
+  kTangentMass,
+  kNormalArmA,
+  kNormalArmB,
+  kTangentArmA,
+  kTangentArmB,
+  kInverseMassA,
+  kInverseMassB,
+  kInverseMomentA,
+  kInverseMomentB,
+  kFields
+};
 
-// The four 256-bit loads of a point's fields read them in this order.
-static_assert(offsetof(ContactPointState, tangent_impulse) == 8 &&
-              offsetof(ContactPointState, target_normal_velocity) == 16 &&
-              offsetof(ContactPointState, normal_mass) == 24 &&
-              offsetof(ContactPointState, tangent_mass) == 32 &&
-              offsetof(ContactPointState, normal_arm_a) == 40 &&
-              offsetof(ContactPointState, normal_arm_b) == 48 &&
-              offsetof(ContactPointState, tangent_arm_a) == 56);
+// The packed arrays, as the kernel reads and writes them.
+struct Columns {
+  double* fields;
+  std::size_t stride;
+  const BodyId* body_a;
+  const BodyId* body_b;
+
+  double* at(Field f, std::size_t entry) const { return fields + f * stride + entry; }
+};
+
+#if GP_LANES_AVX2
 
 using Four = __m256d;
 
-// Four fields of four points, a field in each (a struct: std::array would drop the alignment
-// attribute of the vector type).
-struct FourFields {
-  Four first, second, third, fourth;
-};
+// All ones in each of the first n of four lanes.
+[[gnu::target("avx2")]] inline __m256i first_lanes(std::size_t n) {
+  return _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(n)),
+                            _mm256_set_epi64x(3, 2, 1, 0));
+}
 
-// The four consecutive fields from `field` on of each of the points `p`: a row of each point
-// loaded, then the rows transposed.
-[[gnu::target("avx2")]] inline FourFields fields_from(const std::array<ContactPointState*, 4>& p,
-                                                      double ContactPointState::*field) {
-  const Four r0 = _mm256_loadu_pd(&(p[0]->*field));
-  const Four r1 = _mm256_loadu_pd(&(p[1]->*field));
-  const Four r2 = _mm256_loadu_pd(&(p[2]->*field));
-  const Four r3 = _mm256_loadu_pd(&(p[3]->*field));
-  const Four t0 = _mm256_unpacklo_pd(r0, r1);
-  const Four t1 = _mm256_unpackhi_pd(r0, r1);
-  const Four t2 = _mm256_unpacklo_pd(r2, r3);
-  const Four t3 = _mm256_unpackhi_pd(r2, r3);
-  return {_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_permute2f128_pd(t1, t3, 0x20),
-          _mm256_permute2f128_pd(t0, t2, 0x31), _mm256_permute2f128_pd(t1, t3, 0x31)};
+// Field f of the n ≤ 4 entries from `entry` on (the lanes `lanes`); 0 in the lanes past them,
+// whose memory is not touched: it may be another thread's, or past the end.
+[[gnu::target("avx2")]] inline Four load(const Columns& c, Field f, std::size_t entry,
+                                         std::size_t n, __m256i lanes) {
+  return n == 4 ? _mm256_loadu_pd(c.at(f, entry)) : _mm256_maskload_pd(c.at(f, entry), lanes);
+}
+[[gnu::target("avx2")]] inline void store(const Columns& c, Field f, std::size_t entry,
+                                          std::size_t n, __m256i lanes, Four v) {
+  if (n == 4) {
+    _mm256_storeu_pd(c.at(f, entry), v);
+  } else {
+    _mm256_maskstore_pd(c.at(f, entry), lanes, v);
+  }
 }
 
 // Four vectors, anywhere, into their x and y lanes.
@@ -81,16 +101,16 @@ struct FourBodies {
   Four velocity_x, velocity_y, angular_velocity, inverse_mass, inverse_moment;
 };
 
-// The bodies `ids` of state `s`, a lane each.
+// The bodies `ids` of state `s`, a lane each, with their inverse mass and moment.
 [[gnu::target("avx2")]] inline FourBodies gather_bodies(const std::array<BodyId, 4>& ids,
-                                                        const BodyInertia& inertia,
+                                                        Four inverse_mass, Four inverse_moment,
                                                         const MotionState& s) {
   FourBodies body;
   split(s.velocity[ids[0]], s.velocity[ids[1]], s.velocity[ids[2]], s.velocity[ids[3]],
         body.velocity_x, body.velocity_y);
   body.angular_velocity = gather(s.angular_velocity.data(), ids);
-  body.inverse_mass = gather(inertia.inverse_mass.data(), ids);
-  body.inverse_moment = gather(inertia.inverse_moment.data(), ids);
+  body.inverse_mass = inverse_mass;
+  body.inverse_moment = inverse_moment;
   return body;
 }
 
@@ -140,36 +160,59 @@ struct FourDirections {
   take(m.b, d.x, d.y, d.arm_b, _mm256_xor_pd(j, _mm256_set1_pd(-0.0)), lanes);
 }
 
-// solve_contact_once over the one-point contacts `four`, lane by lane: friction where it is above
-// 0, then the normal constraint, and nothing where the contact is idle.
-[[gnu::target("avx2")]] double solve_four(ContactSet& set, const std::uint32_t* four,
-                                          const BodyInertia& inertia, MotionState& s) {
-  const std::array<const Contact*, 4> c{&set[four[0]], &set[four[1]], &set[four[2]], &set[four[3]]};
-  const std::array<ContactPointState*, 4> p{&set.points(*c[0])[0], &set.points(*c[1])[0],
-                                            &set.points(*c[2])[0], &set.points(*c[3])[0]};
-  const auto [normal_impulse, tangent_impulse, target, normal_mass] =
-      fields_from(p, &ContactPointState::normal_impulse);
-  const auto [tangent_mass, normal_arm_a, normal_arm_b, tangent_arm_a] =
-      fields_from(p, &ContactPointState::tangent_mass);
-  const Four tangent_arm_b = _mm256_set_pd(p[3]->tangent_arm_b, p[2]->tangent_arm_b,
-                                           p[1]->tangent_arm_b, p[0]->tangent_arm_b);
-  Four nx, ny;
-  split(c[0]->normal, c[1]->normal, c[2]->normal, c[3]->normal, nx, ny);
-  const FourDirections normal{nx, ny, normal_arm_a, normal_arm_b};
+// The fields of the n ≤ 4 entries from `entry` on, in `lanes`.
+struct FourEntries {
+  const Columns& columns;
+  std::size_t entry;
+  std::size_t n;
+  __m256i lanes;
+
+  [[gnu::target("avx2")]] Four operator()(Field f) const {
+    return load(columns, f, entry, n, lanes);
+  }
+};
+
+// The lanes, as bits, where `body` is movable: its inverse mass and moment, both at least 0, sum
+// to more than 0.
+[[gnu::target("avx2")]] inline int movable_lanes(const FourBodies& body) {
+  return _mm256_movemask_pd(_mm256_cmp_pd(_mm256_add_pd(body.inverse_mass, body.inverse_moment),
+                                          _mm256_setzero_pd(), _CMP_GT_OQ));
+}
+
+// solve_contact_once over the n ≤ 4 packed one-point contacts from `entry` on, lane by lane:
+// friction where it is above 0, then the normal constraint, and nothing where the contact is
+// idle. The lanes past n take the first's bodies, to read only, and change nothing.
+[[gnu::target("avx2")]] double solve_four(const Columns& c, std::size_t entry, std::size_t n,
+                                          MotionState& s) {
+  const __m256i lanes = first_lanes(n);
+  const FourEntries field{c, entry, n, lanes};
+  std::array<BodyId, 4> a, b;
+  for (std::size_t l = 0; l < 4; ++l) {
+    a[l] = c.body_a[entry + (l < n ? l : 0)];
+    b[l] = c.body_b[entry + (l < n ? l : 0)];
+  }
+  const Four normal_impulse = field(kNormalImpulse);
+  const Four tangent_impulse = field(kTangentImpulse);
+  const Four target = field(kTarget);
+  const Four normal_mass = field(kNormalMass);
+  const Four tangent_mass = field(kTangentMass);
+  const Four nx = field(kNormalX);
+  const Four ny = field(kNormalY);
+  const FourDirections normal{nx, ny, field(kNormalArmA), field(kNormalArmB)};
   // contact_tangent: (−n_y, n_x).
-  const FourDirections tangent{_mm256_xor_pd(ny, _mm256_set1_pd(-0.0)), nx, tangent_arm_a,
-                               tangent_arm_b};
-  const Four friction =
-      _mm256_set_pd(c[3]->friction, c[2]->friction, c[1]->friction, c[0]->friction);
-  const std::array<BodyId, 4> a{c[0]->body_a, c[1]->body_a, c[2]->body_a, c[3]->body_a};
-  const std::array<BodyId, 4> b{c[0]->body_b, c[1]->body_b, c[2]->body_b, c[3]->body_b};
-  FourPairs m{gather_bodies(a, inertia, s), gather_bodies(b, inertia, s)};
+  const FourDirections tangent{_mm256_xor_pd(ny, _mm256_set1_pd(-0.0)), nx, field(kTangentArmA),
+                               field(kTangentArmB)};
+  const Four friction = field(kFriction);
+  FourPairs m{gather_bodies(a, field(kInverseMassA), field(kInverseMomentA), s),
+              gather_bodies(b, field(kInverseMassB), field(kInverseMomentB), s)};
 
   const Four zero = _mm256_setzero_pd();
   // Not idle (solve_contact's idle): an impulse already, or a point closing faster than its target.
-  const Four busy = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(normal_impulse, zero, _CMP_NEQ_UQ),
+  const Four busy =
+      _mm256_and_pd(_mm256_castsi256_pd(lanes),
+                    _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(normal_impulse, zero, _CMP_NEQ_UQ),
                                               _mm256_cmp_pd(tangent_impulse, zero, _CMP_NEQ_UQ)),
-                                 _mm256_cmp_pd(along(m, normal), target, _CMP_LT_OQ));
+                                 _mm256_cmp_pd(along(m, normal), target, _CMP_LT_OQ)));
   const Four rubs = _mm256_and_pd(busy, _mm256_cmp_pd(friction, zero, _CMP_GT_OQ));
 
   const Four sign = _mm256_set1_pd(-0.0);
@@ -186,32 +229,32 @@ struct FourDirections {
   const Four normal_step = _mm256_sub_pd(normal_total, normal_impulse);
   push(m, normal, normal_step, busy);
 
+  store(c, kNormalImpulse, entry, n, lanes, where(busy, normal_impulse, normal_total));
+  store(c, kTangentImpulse, entry, n, lanes, where(rubs, tangent_impulse, tangent_total));
   const Four largest_step =
       max_of(max_of(zero, _mm256_and_pd(magnitude(tangent_step), rubs)), magnitude(normal_step));
-  alignas(32) std::array<double, 4> change, normal_out, tangent_out, vax, vay, wa, vbx, vby, wb;
+  alignas(32) std::array<double, 4> change, vax, vay, wa, vbx, vby, wb;
   _mm256_store_pd(
       change.data(),
       _mm256_and_pd(_mm256_mul_pd(largest_step, _mm256_add_pd(m.a.inverse_mass, m.b.inverse_mass)),
                     busy));
-  _mm256_store_pd(normal_out.data(), where(busy, normal_impulse, normal_total));
-  _mm256_store_pd(tangent_out.data(), where(rubs, tangent_impulse, tangent_total));
   _mm256_store_pd(vax.data(), m.a.velocity_x);
   _mm256_store_pd(vay.data(), m.a.velocity_y);
   _mm256_store_pd(wa.data(), m.a.angular_velocity);
   _mm256_store_pd(vbx.data(), m.b.velocity_x);
   _mm256_store_pd(vby.data(), m.b.velocity_y);
   _mm256_store_pd(wb.data(), m.b.angular_velocity);
+  // Only movable bodies are written, as PairMotion::store does: a static body may be in
+  // contacts solved on other threads at the same time.
+  const int movable_a = movable_lanes(m.a);
+  const int movable_b = movable_lanes(m.b);
   double largest = 0.0;
-  for (std::size_t l = 0; l < 4; ++l) {
-    p[l]->normal_impulse = normal_out[l];
-    p[l]->tangent_impulse = tangent_out[l];
-    // Only movable bodies are written, as PairMotion::store does: a static body may be in
-    // contacts solved on other threads at the same time.
-    if (inertia.inverse_mass[a[l]] + inertia.inverse_moment[a[l]] > 0.0) {
+  for (std::size_t l = 0; l < n; ++l) {
+    if ((movable_a >> l) & 1) {
       s.velocity[a[l]] = Vec2(vax[l], vay[l]);
       s.angular_velocity[a[l]] = wa[l];
     }
-    if (inertia.inverse_mass[b[l]] + inertia.inverse_moment[b[l]] > 0.0) {
+    if ((movable_b >> l) & 1) {
       s.velocity[b[l]] = Vec2(vbx[l], vby[l]);
       s.angular_velocity[b[l]] = wb[l];
     }
@@ -224,25 +267,81 @@ struct FourDirections {
 
 }  // namespace
 
-double solve_single_points(ContactSet& set, std::span<const std::uint32_t> contacts,
-                           const BodyInertia& inertia, MotionState& s, Lanes lanes) {
-  double largest = 0.0;
-  std::size_t done = 0;
-#if GP_LANES_AVX2
-  if (lanes == Lanes::kFour) {
-    for (; done + 4 <= contacts.size(); done += 4) {
-      largest = std::max(largest, solve_four(set, contacts.data() + done, inertia, s));
-    }
-  }
-#endif
-  for (; done < contacts.size(); ++done) {
-    largest = std::max(largest, solve_contact_once(set, set[contacts[done]], inertia, s));
-  }
-  return largest;
+bool SinglePointLanes::available() {
+  return GP_LANES_AVX2 && widest_lanes() == Lanes::kFour;
 }
 
-const char* single_point_lanes_name(Lanes lanes) {
-  return lanes == Lanes::kFour && GP_LANES_AVX2 ? "four at a time (AVX2)" : "one at a time";
+void SinglePointLanes::pack(std::span<const std::uint32_t> entries, const ContactSet& set,
+                            const BodyInertia& inertia) {
+  const std::size_t count = entries.size();
+  stride_ = count;
+  fields_.resize(kFields * count);
+  contact_.assign(entries.begin(), entries.end());
+  single_.resize(count);
+  body_a_.resize(count);
+  body_b_.resize(count);
+  const Columns columns{fields_.data(), stride_, body_a_.data(), body_b_.data()};
+  for (std::size_t e = 0; e < count; ++e) {
+    const Contact& c = set[entries[e]];
+    single_[e] = c.count() == 1 ? 1 : 0;
+    body_a_[e] = c.body_a;
+    body_b_[e] = c.body_b;
+    if (single_[e] == 0) continue;
+    const ContactPointState& p = set.points(c)[0];
+    const auto put = [&](Field f, double value) { *columns.at(f, e) = value; };
+    put(kNormalX, c.normal.x());
+    put(kNormalY, c.normal.y());
+    put(kFriction, c.friction);
+    put(kNormalImpulse, p.normal_impulse);
+    put(kTangentImpulse, p.tangent_impulse);
+    put(kTarget, p.target_normal_velocity);
+    put(kNormalMass, p.normal_mass);
+    put(kTangentMass, p.tangent_mass);
+    put(kNormalArmA, p.normal_arm_a);
+    put(kNormalArmB, p.normal_arm_b);
+    put(kTangentArmA, p.tangent_arm_a);
+    put(kTangentArmB, p.tangent_arm_b);
+    put(kInverseMassA, inertia.inverse_mass[c.body_a]);
+    put(kInverseMassB, inertia.inverse_mass[c.body_b]);
+    put(kInverseMomentA, inertia.inverse_moment[c.body_a]);
+    put(kInverseMomentB, inertia.inverse_moment[c.body_b]);
+  }
+}
+
+std::size_t SinglePointLanes::leading_single_points(std::size_t first, std::size_t count) const {
+  std::size_t n = 0;
+  while (n < count && single_[first + n] != 0) ++n;
+  return n;
+}
+
+double SinglePointLanes::solve(std::size_t first, std::size_t count, MotionState& s) {
+#if GP_LANES_AVX2
+  const Columns columns{fields_.data(), stride_, body_a_.data(), body_b_.data()};
+  double largest = 0.0;
+  for (std::size_t done = 0; done < count; done += 4) {
+    largest = std::max(
+        largest, solve_four(columns, first + done, std::min<std::size_t>(4, count - done), s));
+  }
+  return largest;
+#else
+  (void)first;
+  (void)count;
+  (void)s;
+  throw std::logic_error("SinglePointLanes::solve: four lanes need AVX2");
+#endif
+}
+
+void SinglePointLanes::unpack(ContactSet& set) const {
+  for (std::size_t e = 0; e < contact_.size(); ++e) {
+    if (single_[e] == 0) continue;
+    ContactPointState& p = set.points(set[contact_[e]])[0];
+    p.normal_impulse = fields_[kNormalImpulse * stride_ + e];
+    p.tangent_impulse = fields_[kTangentImpulse * stride_ + e];
+  }
+}
+
+const char* SinglePointLanes::name() {
+  return available() ? "four at a time (AVX2)" : "one at a time";
 }
 
 }  // namespace gp

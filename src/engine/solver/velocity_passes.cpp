@@ -400,45 +400,47 @@ int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int itera
 
 namespace {
 
-// One pass over contacts of a colour, which share no movable body: the one-point ones gathered a
-// block at a time for solve_single_points, the others one by one. Returns the largest change.
-double solve_colour(ContactSet& contacts, std::span<const std::uint32_t> colour,
-                    const BodyInertia& inertia, MotionState& s, Lanes lanes) {
-  constexpr std::size_t kBlock = 128;
-  std::array<std::uint32_t, kBlock> single;
+// One pass over contacts of a colour, which share no movable body, from `entry` on in the
+// colours `lanes` packed (null: none packed): the one-point ones four at a time, the others one by
+// one. Returns the largest change.
+double solve_colour(ContactSet& contacts, std::size_t entry, std::span<const std::uint32_t> colour,
+                    const BodyInertia& inertia, MotionState& s, SinglePointLanes* lanes) {
   double largest = 0.0;
-  std::size_t held = 0;
-  for (const std::uint32_t i : colour) {
-    const Contact& c = contacts[i];
-    if (c.count() != 1) {
-      largest = std::max(largest, solve_once(contacts, c, inertia, s));
-      continue;
+  for (std::size_t done = 0; done < colour.size();) {
+    if (lanes != nullptr) {
+      const std::size_t single = lanes->leading_single_points(entry + done, colour.size() - done);
+      largest = std::max(largest, lanes->solve(entry + done, single, s));
+      done += single;
+      if (done == colour.size()) break;
     }
-    single[held++] = i;
-    if (held == kBlock) {
-      largest = std::max(largest, solve_single_points(contacts, single, inertia, s, lanes));
-      held = 0;
-    }
+    largest = std::max(largest, solve_once(contacts, contacts[colour[done]], inertia, s));
+    ++done;
   }
-  return std::max(largest,
-                  solve_single_points(contacts, std::span(single).first(held), inertia, s, lanes));
+  return largest;
 }
 
 }  // namespace
 
 int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
-                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s) {
-  const Lanes lanes = widest_lanes();
-  return solve_velocities_in(
+                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s,
+                     SinglePointLanes& lanes) {
+  SinglePointLanes* packed = nullptr;
+  if (SinglePointLanes::available() && !batches.coloured().empty()) {
+    lanes.pack(batches.coloured(), contacts, inertia);
+    packed = &lanes;
+  }
+  const int passes = solve_velocities_in(
       [&](const auto& solve) {
         return batches.run(
             solve,
-            [&](std::span<const std::uint32_t> colour) {
-              return solve_colour(contacts, colour, inertia, s, lanes);
+            [&](std::size_t entry, std::span<const std::uint32_t> colour) {
+              return solve_colour(contacts, entry, colour, inertia, s, packed);
             },
             ContactBatches::Visit::kInterleaved);
       },
       contacts, inertia, limits.iterations, limits.tolerance, s);
+  if (packed != nullptr) packed->unpack(contacts);
+  return passes;
 }
 
 void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {

@@ -262,7 +262,7 @@ constexpr std::array kStages{
                                "tolerance";
             if (c.settings.coloured_island_contacts > 0) {
               text += "; the one-point contacts of a coloured island " +
-                      std::string(single_point_lanes_name(widest_lanes()));
+                      std::string(SinglePointLanes::name());
             }
             return text;
           },
