@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <type_traits>
+
+#include "engine/solver/disc_position_lanes.hpp"
 
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
@@ -163,6 +167,42 @@ Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, c
 
 }  // namespace
 
+namespace {
+
+// One position pass over a colour's contacts, which share no movable body: those between two
+// centred discs four at a time where the CPU has AVX2 (correct_centred_discs), the others by
+// `solve`. Returns 1 if one overlapped by more than two slops, else 0, as `solve` does.
+template <typename Solve>
+double correct_colour(const ContactSet& contacts, std::span<const std::uint32_t> colour,
+                      const Solve& solve, const DiscPositionInput& in, MotionState& s) {
+  if (!disc_position_lanes()) {
+    double deep = 0.0;
+    for (const std::uint32_t i : colour) deep = std::max(deep, solve(i));
+    return deep;
+  }
+  constexpr std::size_t kBlock = 128;
+  std::array<std::uint32_t, kBlock> discs;
+  double deep = 0.0;
+  std::size_t held = 0;
+  const auto correct_held = [&] {
+    if (correct_centred_discs(contacts, std::span(discs).first(held), in, s)) deep = 1.0;
+    held = 0;
+  };
+  for (const std::uint32_t i : colour) {
+    const Contact& c = contacts[i];
+    if (c.count() != 1 || !centred_discs(contacts.points(c)[0])) {
+      deep = std::max(deep, solve(i));
+      continue;
+    }
+    discs[held++] = i;
+    if (held == kBlock) correct_held();
+  }
+  correct_held();
+  return deep;
+}
+
+}  // namespace
+
 template <typename Order>
 void PositionCorrection::correct_in(const Order& order, const ContactSet& contacts,
                                     const ContactGeometry& geometry, const PositionLimits& limits,
@@ -180,50 +220,61 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   const auto turned_with = [&](BodyId b) {
     return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
   };
+  const auto solve = [&](std::uint32_t i) {
+    const Contact& c = contacts[i];
+    bool contact_deep = false;
+    for (const ContactPointState& p : contacts.points(c)) {
+      // Every point of a pile at rest is passed over here, where placing its anchors took 12%
+      // of the pile's step.
+      if (const double room = slop - static_cast<double>(p.depth);
+          room > 0.0 && MovedSinceDetection(c, s, detected).within_slop(p, room)) {
+        continue;
+      }
+      // Each body's deepest point inside the other at detection, half the depth from the
+      // contact point.
+      const double half_depth = 0.5 * p.depth;
+      const Vec2 arm_a = anchor_arm(
+          p.anchor_a, shapes[c.shape_a],
+          [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
+          half_depth - p.tangent_arm_a, turned_with(c.body_a));
+      const Vec2 arm_b = anchor_arm(
+          p.anchor_b, shapes[c.shape_b],
+          [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
+          p.tangent_arm_b + half_depth, turned_with(c.body_b));
+      const double separation =
+          (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
+      const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
+      if (excess == 0.0) continue;
+      contact_deep = contact_deep || separation < -2.0 * slop;
+      // The impulses' effective mass, applied to a displacement instead of a velocity; set up
+      // for the step's arms, which the small turns of these passes barely change.
+      const Vec2 shift = -excess * p.normal_mass * c.normal;
+      // A push along the normal through a disc's centre does not turn it: zero exactly, not
+      // by round-off, so that nothing turns it and its rotation is not looked up.
+      const auto moment = [&](AnchorKind kind, const Vec2& arm, const Vec2& push) {
+        return kind == AnchorKind::kCentredDisc ? 0.0 : dd::torque(arm, push);
+      };
+      const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, arm_a, shift),
+                                   moment(p.anchor_b, arm_b, tm::reaction_force(shift)), s);
+      rotations.turn(c.body_a, turn(c.body_a), turns.a);
+      rotations.turn(c.body_b, turn(c.body_b), turns.b);
+    }
+    return contact_deep ? 1.0 : 0.0;
+  };
   // Passes end after one that found no point overlapping by more than two slops: what is left
   // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
   for (bool deep = true; deep && iterations-- > 0;) {
-    deep = 0.0 != order.run([&](std::uint32_t i) {
-      const Contact& c = contacts[i];
-      bool contact_deep = false;
-      for (const ContactPointState& p : contacts.points(c)) {
-        // Every point of a pile at rest is passed over here, where placing its anchors took 12%
-        // of the pile's step.
-        if (const double room = slop - static_cast<double>(p.depth);
-            room > 0.0 && MovedSinceDetection(c, s, detected).within_slop(p, room)) {
-          continue;
-        }
-        // Each body's deepest point inside the other at detection, half the depth from the
-        // contact point.
-        const double half_depth = 0.5 * p.depth;
-        const Vec2 arm_a = anchor_arm(
-            p.anchor_a, shapes[c.shape_a],
-            [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
-            half_depth - p.tangent_arm_a, turned_with(c.body_a));
-        const Vec2 arm_b = anchor_arm(
-            p.anchor_b, shapes[c.shape_b],
-            [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
-            p.tangent_arm_b + half_depth, turned_with(c.body_b));
-        const double separation =
-            (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
-        const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
-        if (excess == 0.0) continue;
-        contact_deep = contact_deep || separation < -2.0 * slop;
-        // The impulses' effective mass, applied to a displacement instead of a velocity; set up
-        // for the step's arms, which the small turns of these passes barely change.
-        const Vec2 shift = -excess * p.normal_mass * c.normal;
-        // A push along the normal through a disc's centre does not turn it: zero exactly, not
-        // by round-off, so that nothing turns it and its rotation is not looked up.
-        const auto moment = [&](AnchorKind kind, const Vec2& arm, const Vec2& push) {
-          return kind == AnchorKind::kCentredDisc ? 0.0 : dd::torque(arm, push);
-        };
-        const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, arm_a, shift),
-                                     moment(p.anchor_b, arm_b, tm::reaction_force(shift)), s);
-        rotations.turn(c.body_a, turn(c.body_a), turns.a);
-        rotations.turn(c.body_b, turn(c.body_b), turns.b);
-      }
-      return contact_deep ? 1.0 : 0.0;
-    });
+    if constexpr (std::is_same_v<Order, ContactBatches>) {
+      deep =
+          0.0 != order.run(
+                     solve,
+                     [&](std::size_t, std::span<const std::uint32_t> colour) {
+                       return correct_colour(contacts, colour, solve, {inertia, detected, slop}, s);
+                     },
+                     ContactBatches::Visit::kInOrder);
+    } else {
+      deep = 0.0 != order.run(solve);
+    }
   }
 }
 

@@ -46,14 +46,6 @@ struct Columns {
 
 #if GP_LANES_AVX2
 
-using Four = __m256d;
-
-// All ones in each of the first n of four lanes.
-[[gnu::target("avx2")]] inline __m256i first_lanes(std::size_t n) {
-  return _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(n)),
-                            _mm256_set_epi64x(3, 2, 1, 0));
-}
-
 // Field f of the n ≤ 4 entries from `entry` on (the lanes `lanes`); 0 in the lanes past them,
 // whose memory is not touched: it may be another thread's, or past the end.
 [[gnu::target("avx2")]] inline Four load(const Columns& c, Field f, std::size_t entry,
@@ -67,33 +59,6 @@ using Four = __m256d;
   } else {
     _mm256_maskstore_pd(c.at(f, entry), lanes, v);
   }
-}
-
-// Four vectors, anywhere, into their x and y lanes.
-[[gnu::target("avx2")]] inline void split(const Vec2& v0, const Vec2& v1, const Vec2& v2,
-                                          const Vec2& v3, Four& x, Four& y) {
-  split_xy(_mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v0.data())),
-                                _mm_loadu_pd(v1.data()), 1),
-           _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v2.data())),
-                                _mm_loadu_pd(v3.data()), 1),
-           x, y);
-}
-
-[[gnu::target("avx2")]] inline Four gather(const double* values, const std::array<BodyId, 4>& b) {
-  return _mm256_set_pd(values[b[3]], values[b[2]], values[b[1]], values[b[0]]);
-}
-
-// std::max(a, b) and std::min(a, b) lane by lane, equal values and NaN included: each gives its
-// first argument unless the second is larger (smaller), where the instructions give their second
-// operand unless the first is.
-[[gnu::target("avx2")]] inline Four max_of(Four a, Four b) {
-  return _mm256_max_pd(b, a);
-}
-[[gnu::target("avx2")]] inline Four min_of(Four a, Four b) {
-  return _mm256_min_pd(b, a);
-}
-[[gnu::target("avx2")]] inline Four magnitude(Four x) {
-  return _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
 }
 
 // One body of each of four contacts: its velocity and inverse inertias.
@@ -130,11 +95,6 @@ struct FourDirections {
                                  _mm256_mul_pd(_mm256_sub_pd(m.a.velocity_y, m.b.velocity_y), d.y));
   return _mm256_sub_pd(_mm256_add_pd(dot, _mm256_mul_pd(m.a.angular_velocity, d.arm_a)),
                        _mm256_mul_pd(m.b.angular_velocity, d.arm_b));
-}
-
-// `after` in the lanes of `mask`, `before` in the others.
-[[gnu::target("avx2")]] inline Four where(Four mask, Four before, Four after) {
-  return _mm256_blendv_pd(before, after, mask);
 }
 
 // The impulse j (dx, dy) at an arm whose cross product with the direction is `arm`, added to
