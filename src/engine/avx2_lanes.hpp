@@ -22,6 +22,16 @@ using Four = __m256d;
   y = _mm256_permute4x64_pd(_mm256_unpackhi_pd(low, high), kMiddleSwapped);
 }
 
+/// split_xy undone: x and y lanes back into (x0, y0, x1, y1) in `low` and (x2, y2, x3, y3) in
+/// `high` (the permutation is its own inverse).
+[[gnu::target("avx2")]] inline void join_xy(__m256d x, __m256d y, __m256d& low, __m256d& high) {
+  constexpr int kMiddleSwapped = 0b11'01'10'00;
+  const __m256d xs = _mm256_permute4x64_pd(x, kMiddleSwapped);
+  const __m256d ys = _mm256_permute4x64_pd(y, kMiddleSwapped);
+  low = _mm256_unpacklo_pd(xs, ys);
+  high = _mm256_unpackhi_pd(xs, ys);
+}
+
 /// All ones in each of the first n of four lanes.
 [[gnu::target("avx2")]] inline __m256i first_lanes(std::size_t n) {
   return _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(n)),

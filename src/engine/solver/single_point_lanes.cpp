@@ -139,6 +139,27 @@ struct FourEntries {
                                           _mm256_setzero_pd(), _CMP_GT_OQ));
 }
 
+// The velocities of `body` back into `s`, in the lanes whose bits `lanes` sets: the x and y lanes
+// interleaved again, each body's stored as the 16 bytes of its Vec2.
+[[gnu::target("avx2")]] inline void store_bodies(const FourBodies& body,
+                                                 const std::array<BodyId, 4>& ids, int lanes,
+                                                 MotionState& s) {
+  Four first_two, last_two;
+  join_xy(body.velocity_x, body.velocity_y, first_two, last_two);
+  // Arrays, not std::array, which would drop the vector type's alignment attribute.
+  const __m128d velocity[4] = {
+      _mm256_castpd256_pd128(first_two), _mm256_extractf128_pd(first_two, 1),
+      _mm256_castpd256_pd128(last_two), _mm256_extractf128_pd(last_two, 1)};
+  const __m128d w01 = _mm256_castpd256_pd128(body.angular_velocity);
+  const __m128d w23 = _mm256_extractf128_pd(body.angular_velocity, 1);
+  const __m128d angular[4] = {w01, _mm_unpackhi_pd(w01, w01), w23, _mm_unpackhi_pd(w23, w23)};
+  for (std::size_t l = 0; l < 4; ++l) {
+    if (((lanes >> l) & 1) == 0) continue;
+    _mm_storeu_pd(s.velocity[ids[l]].data(), velocity[l]);
+    _mm_store_sd(&s.angular_velocity[ids[l]], angular[l]);
+  }
+}
+
 // solve_contact_once over the n ≤ 4 packed one-point contacts from `entry` on, lane by lane:
 // friction where it is above 0, then the normal constraint, and nothing where the contact is
 // idle. The lanes past n take the first's bodies, to read only, and change nothing.
@@ -193,33 +214,18 @@ struct FourEntries {
   store(c, kTangentImpulse, entry, n, lanes, where(rubs, tangent_impulse, tangent_total));
   const Four largest_step =
       max_of(max_of(zero, _mm256_and_pd(magnitude(tangent_step), rubs)), magnitude(normal_step));
-  alignas(32) std::array<double, 4> change, vax, vay, wa, vbx, vby, wb;
+  alignas(32) std::array<double, 4> change;
   _mm256_store_pd(
       change.data(),
       _mm256_and_pd(_mm256_mul_pd(largest_step, _mm256_add_pd(m.a.inverse_mass, m.b.inverse_mass)),
                     busy));
-  _mm256_store_pd(vax.data(), m.a.velocity_x);
-  _mm256_store_pd(vay.data(), m.a.velocity_y);
-  _mm256_store_pd(wa.data(), m.a.angular_velocity);
-  _mm256_store_pd(vbx.data(), m.b.velocity_x);
-  _mm256_store_pd(vby.data(), m.b.velocity_y);
-  _mm256_store_pd(wb.data(), m.b.angular_velocity);
   // Only movable bodies are written, as PairMotion::store does: a static body may be in
   // contacts solved on other threads at the same time.
-  const int movable_a = movable_lanes(m.a);
-  const int movable_b = movable_lanes(m.b);
+  const int first_n = (1 << n) - 1;
+  store_bodies(m.a, a, movable_lanes(m.a) & first_n, s);
+  store_bodies(m.b, b, movable_lanes(m.b) & first_n, s);
   double largest = 0.0;
-  for (std::size_t l = 0; l < n; ++l) {
-    if ((movable_a >> l) & 1) {
-      s.velocity[a[l]] = Vec2(vax[l], vay[l]);
-      s.angular_velocity[a[l]] = wa[l];
-    }
-    if ((movable_b >> l) & 1) {
-      s.velocity[b[l]] = Vec2(vbx[l], vby[l]);
-      s.angular_velocity[b[l]] = wb[l];
-    }
-    largest = std::max(largest, change[l]);
-  }
+  for (std::size_t l = 0; l < n; ++l) largest = std::max(largest, change[l]);
   return largest;
 }
 
