@@ -11,33 +11,19 @@
 
 #include "engine/solver/single_point_lanes.hpp"
 #include "engine/solver/velocity_passes.hpp"
+#include "random_colour.hpp"
 
 namespace {
 namespace test_single_point_lanes {
 
-constexpr std::size_t kContacts = 11;  // two groups of four and three left over
+constexpr std::size_t kContacts = gp::test::kColourContacts;
 
-// kContacts one-point contacts, contact i between bodies 1 + 2i and 2 + 2i, but for the odd ones,
-// whose B is static body 0, shared as a colour's contacts may share a static body. Velocities,
-// impulses and masses random, with the cases the lanes must keep apart: an idle contact (no
-// impulse, a target it already meets), frictionless ones, and −0.0 velocities.
-struct Colour {
-  gp::BodyInertia inertia;
-  gp::MotionState state;
-  gp::ContactSet set;
-  std::vector<std::uint32_t> indices;
-
-  explicit Colour(std::uint64_t seed) {
-    std::mt19937_64 random(seed);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    std::uniform_real_distribution<double> positive(0.2, 3.0);
-    const std::size_t bodies = 1 + 2 * kContacts;
-    inertia.inverse_mass.assign(bodies, 0.0);
-    inertia.inverse_moment.assign(bodies, 0.0);
-    state.resize(bodies);
-    for (std::size_t b = 1; b < bodies; ++b) {
-      inertia.inverse_mass[b] = positive(random);
-      inertia.inverse_moment[b] = positive(random);
+// The colour of random_colour.hpp. Velocities, impulses and masses random, with the cases the
+// lanes must keep apart: an idle contact (no impulse, a target it already meets), frictionless
+// ones, and −0.0 velocities.
+struct Colour : gp::test::RandomColour {
+  explicit Colour(std::uint64_t seed) : RandomColour(seed) {
+    for (std::size_t b = 1; b < gp::test::kColourBodies; ++b) {
       state.velocity[b] = {unit(random), unit(random)};
       state.angular_velocity[b] = unit(random);
     }
@@ -47,8 +33,8 @@ struct Colour {
     state.angular_velocity[10] = -0.0;
     for (std::uint32_t i = 0; i < kContacts; ++i) {
       gp::Contact& c = set.append(1);
-      c.body_a = 1 + 2 * i;
-      c.body_b = i % 2 == 1 ? 0 : 2 + 2 * i;
+      c.body_a = gp::test::colour_body_a(i);
+      c.body_b = gp::test::colour_body_b(i);
       const double angle = 3.0 * unit(random);
       c.normal = {std::cos(angle), std::sin(angle)};
       c.friction = i % 3 == 2 ? 0.0 : positive(random);
