@@ -1,13 +1,13 @@
 #include "engine/solver/position_passes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
 #include <type_traits>
 
 #include "engine/solver/disc_position_lanes.hpp"
-
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/angular_velocity.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
@@ -164,10 +164,6 @@ Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, c
   }
   return turned(deepest());
 }
-
-}  // namespace
-
-namespace {
 
 // One position pass over a colour's contacts, which share no movable body: those between two
 // centred discs four at a time where the CPU has AVX2 (correct_centred_discs), the others by
