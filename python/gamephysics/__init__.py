@@ -1,7 +1,8 @@
 """GamePhysics: 2D rigid bodies after the GamePhysics SRS (Drasil project), for Python.
 
 A Space owns bodies made of shapes and advances them with step(); load_scene reads a scene file
-(docs/scene-format.md) and simulate runs one into NumPy arrays. The SRS's models are functions of
+(docs/scene-format.md) and simulate runs one into NumPy arrays. Both run on one thread unless
+set_threads asks for more, with the same numbers on any count. The SRS's models are functions of
 gamephysics.models.tm, .gd, .dd and .im, each documented with its SRS id, equation and units.
 Units are SI throughout; vectors are NumPy arrays of two numbers.
 """
@@ -57,8 +58,9 @@ def simulate(scene: Union[Scene, str, os.PathLike], integrator: Optional[str] = 
              output_dt: Optional[float] = None) -> Trajectory:
     """Runs a scene (a Scene, or the path of a scene file) as `gamephysics simulate` does, the
     options replacing the file's values as the command line's do (integrator: symplectic_euler,
-    velocity_verlet or rk4; dt, duration, output_dt in s). Raises InputError with the command
-    line's message for bad input, NumericalError if a state becomes non-finite."""
+    velocity_verlet or rk4; dt, duration, output_dt in s), on the threads of set_threads. Raises
+    InputError with the command line's message for bad input, NumericalError if a state becomes
+    non-finite."""
     overrides = dict(integrator=integrator, dt=dt, duration=duration, output_dt=output_dt)
     if not isinstance(scene, Scene):
         scene = load_scene(os.fspath(scene), **overrides)
