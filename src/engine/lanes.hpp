@@ -18,4 +18,9 @@ enum class Lanes { kOne, kTwo, kFour };
 /// the same bits.
 Lanes widest_lanes();
 
+/// Whether the four-lane (AVX2) paths run: widest_lanes() is kFour.
+inline bool four_lanes() {
+  return widest_lanes() == Lanes::kFour;
+}
+
 }  // namespace gp

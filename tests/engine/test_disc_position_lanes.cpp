@@ -88,7 +88,7 @@ std::uint64_t bits(double x) {
 
 TEST_CASE("Centred discs' position pass four at a time is the same to the bit as one at a time",
           "[via:DD:angDisp][via:DD:impulseV]") {
-  if (!gp::disc_position_lanes()) {
+  if (!gp::four_lanes()) {
     WARN("no AVX2 on this CPU: the position passes take contacts one at a time");
     return;
   }
@@ -112,7 +112,7 @@ TEST_CASE("Centred discs' position pass four at a time is the same to the bit as
 
 TEST_CASE("Centred discs' position pass four at a time removes a fifth of each excess overlap",
           "[via:DD:impulseV]") {
-  if (!gp::disc_position_lanes()) {
+  if (!gp::four_lanes()) {
     WARN("no AVX2 on this CPU: the position passes take contacts one at a time");
     return;
   }

@@ -86,7 +86,7 @@ double pass_in_runs(Colour& colour, std::span<const std::size_t> runs) {
 
 TEST_CASE("A colour's one-point contacts four at a time are the same to the bit as one at a time",
           "[via:GD:impulse][via:DD:impulseV]") {
-  if (!gp::SinglePointLanes::available()) {
+  if (!gp::four_lanes()) {
     WARN("no AVX2 on this CPU: the velocity passes take contacts one at a time");
     return;
   }
@@ -131,7 +131,7 @@ TEST_CASE("After a pass four at a time, each contact meets its normal condition 
   for (const std::uint32_t i : colour.indices) {
     normal_before.push_back(colour.set.points(colour.set[i])[0].normal_impulse);
   }
-  if (!gp::SinglePointLanes::available()) {
+  if (!gp::four_lanes()) {
     WARN("no AVX2 on this CPU: the velocity passes take contacts one at a time");
     return;
   }

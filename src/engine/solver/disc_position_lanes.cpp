@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "engine/lanes.hpp"
 #include "engine/solver/contact_islands.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 
@@ -128,10 +127,6 @@ namespace {
 #endif
 
 }  // namespace
-
-bool disc_position_lanes() {
-  return GP_LANES_AVX2 && widest_lanes() == Lanes::kFour;
-}
 
 bool correct_centred_discs(const ContactSet& set, std::span<const std::uint32_t> contacts,
                            const DiscPositionInput& in, MotionState& s) {

@@ -6,12 +6,10 @@
 #include <cstdint>
 #include <span>
 
+#include "engine/lanes.hpp"
 #include "engine/solver/contact_set.hpp"
 
 namespace gp {
-
-/// Whether this build and CPU take such contacts four at a time (widest_lanes() is kFour).
-bool disc_position_lanes();
 
 /// Whether `point`'s contact is one that correct_centred_discs takes: both of its anchors are
 /// centred discs (AnchorKind::kCentredDisc).
@@ -32,7 +30,7 @@ struct DiscPositionInput {
 /// whether one of them overlapped by more than two slops. Each lane runs the pass's operations
 /// in its order, compiled for AVX2 alone, so positions and angles are the same to the bit as one
 /// at a time; the bodies' inverse moments are finite, so that no disc turns (0 · I⁻¹ = 0). Only
-/// where disc_position_lanes().
+/// where four_lanes().
 bool correct_centred_discs(const ContactSet& set, std::span<const std::uint32_t> contacts,
                            const DiscPositionInput& in, MotionState& s);
 

@@ -166,16 +166,11 @@ Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, c
 }
 
 // One position pass over a colour's contacts, which share no movable body: those between two
-// centred discs four at a time where the CPU has AVX2 (correct_centred_discs), the others by
+// centred discs four at a time (correct_centred_discs, only where four_lanes()), the others by
 // `solve`. Returns 1 if one overlapped by more than two slops, else 0, as `solve` does.
 template <typename Solve>
 double correct_colour(const ContactSet& contacts, std::span<const std::uint32_t> colour,
                       const Solve& solve, const DiscPositionInput& in, MotionState& s) {
-  if (!disc_position_lanes()) {
-    double deep = 0.0;
-    for (const std::uint32_t i : colour) deep = std::max(deep, solve(i));
-    return deep;
-  }
   constexpr std::size_t kBlock = 128;
   std::array<std::uint32_t, kBlock> discs;
   double deep = 0.0;
@@ -261,16 +256,18 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   // is within the resting overlap's own scale, and a pass there moves bodies by mere microns.
   for (bool deep = true; deep && iterations-- > 0;) {
     if constexpr (std::is_same_v<Order, ContactBatches>) {
-      deep =
-          0.0 != order.run(
-                     solve,
-                     [&](std::size_t, std::span<const std::uint32_t> colour) {
-                       return correct_colour(contacts, colour, solve, {inertia, detected, slop}, s);
-                     },
-                     ContactBatches::Visit::kInOrder);
-    } else {
-      deep = 0.0 != order.run(solve);
+      if (four_lanes()) {
+        deep = 0.0 !=
+               order.run(
+                   solve,
+                   [&](std::size_t, std::span<const std::uint32_t> colour) {
+                     return correct_colour(contacts, colour, solve, {inertia, detected, slop}, s);
+                   },
+                   ContactBatches::Visit::kInOrder);
+        continue;
+      }
     }
+    deep = 0.0 != order.run(solve);
   }
 }
 

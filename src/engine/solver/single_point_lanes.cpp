@@ -233,20 +233,15 @@ struct FourEntries {
 
 }  // namespace
 
-bool SinglePointLanes::available() {
-  return GP_LANES_AVX2 && widest_lanes() == Lanes::kFour;
-}
-
 void SinglePointLanes::pack(std::span<const std::uint32_t> entries, const ContactSet& set,
                             const BodyInertia& inertia) {
   const std::size_t count = entries.size();
-  stride_ = count;
   fields_.resize(kFields * count);
   contact_.assign(entries.begin(), entries.end());
   single_.resize(count);
   body_a_.resize(count);
   body_b_.resize(count);
-  const Columns columns{fields_.data(), stride_, body_a_.data(), body_b_.data()};
+  const Columns columns{fields_.data(), count, body_a_.data(), body_b_.data()};
   for (std::size_t e = 0; e < count; ++e) {
     const Contact& c = set[entries[e]];
     single_[e] = c.count() == 1 ? 1 : 0;
@@ -282,7 +277,7 @@ std::size_t SinglePointLanes::leading_single_points(std::size_t first, std::size
 
 double SinglePointLanes::solve(std::size_t first, std::size_t count, MotionState& s) {
 #if GP_LANES_AVX2
-  const Columns columns{fields_.data(), stride_, body_a_.data(), body_b_.data()};
+  const Columns columns{fields_.data(), contact_.size(), body_a_.data(), body_b_.data()};
   double largest = 0.0;
   for (std::size_t done = 0; done < count; done += 4) {
     largest = std::max(
@@ -298,16 +293,17 @@ double SinglePointLanes::solve(std::size_t first, std::size_t count, MotionState
 }
 
 void SinglePointLanes::unpack(ContactSet& set) const {
-  for (std::size_t e = 0; e < contact_.size(); ++e) {
+  const std::size_t count = contact_.size();
+  for (std::size_t e = 0; e < count; ++e) {
     if (single_[e] == 0) continue;
     ContactPointState& p = set.points(set[contact_[e]])[0];
-    p.normal_impulse = fields_[kNormalImpulse * stride_ + e];
-    p.tangent_impulse = fields_[kTangentImpulse * stride_ + e];
+    p.normal_impulse = fields_[kNormalImpulse * count + e];
+    p.tangent_impulse = fields_[kTangentImpulse * count + e];
   }
 }
 
 const char* SinglePointLanes::name() {
-  return available() ? "four at a time (AVX2)" : "one at a time";
+  return four_lanes() ? "four at a time (AVX2)" : "one at a time";
 }
 
 }  // namespace gp

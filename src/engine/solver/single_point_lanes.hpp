@@ -16,12 +16,9 @@ namespace gp {
 
 /// The fields a pass reads of the one-point contacts of a run of colours, each field in an array
 /// of its own, by the contact's entry in that run, kept between steps so that a step does not
-/// allocate. Only where widest_lanes() is kFour (available()).
+/// allocate. Only where four_lanes().
 class SinglePointLanes {
  public:
-  /// Whether this build and CPU take contacts four at a time (widest_lanes() is kFour).
-  static bool available();
-
   /// Copies out the fields of the one-point contacts among `entries` (indices into `set`), after
   /// their effective masses and targets are set (prepare_contacts), and their bodies' inverse
   /// inertias.
@@ -36,19 +33,19 @@ class SinglePointLanes {
   /// no two of which share a movable body, on the velocities of `s`, four at a time; returns the
   /// largest value solve_contact_once would. Each lane runs solve_contact_once's operations in
   /// its order, compiled for AVX2 alone (no fused multiply-add to round differently), so the
-  /// velocities and impulses are the same to the bit. Only where available().
+  /// velocities and impulses are the same to the bit. Only where four_lanes().
   double solve(std::size_t first, std::size_t count, MotionState& s);
 
   /// The impulses the passes accumulated, back into the points of `set` they were packed from.
   void unpack(ContactSet& set) const;
 
   /// How the passes take a colour's one-point contacts, for --explain: "four at a time (AVX2)"
-  /// where available(), else "one at a time".
+  /// where four_lanes(), else "one at a time".
   static const char* name();
 
  private:
-  std::size_t stride_ = 0;              // entries: each field's array
-  std::vector<double> fields_;          // the fields (single_point_lanes.cpp), array after array
+  std::vector<double> fields_;          // the fields (single_point_lanes.cpp), array after array,
+                                        // an entry of each array per entry of contact_
   std::vector<std::uint32_t> contact_;  // per entry: its index in the set
   std::vector<std::uint8_t> single_;    // per entry: 1 for a one-point contact (packed)
   std::vector<BodyId> body_a_, body_b_;

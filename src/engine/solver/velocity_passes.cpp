@@ -425,7 +425,7 @@ int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
                      const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s,
                      SinglePointLanes& lanes) {
   SinglePointLanes* packed = nullptr;
-  if (SinglePointLanes::available() && !batches.coloured().empty()) {
+  if (four_lanes() && !batches.coloured().empty()) {
     lanes.pack(batches.coloured(), contacts, inertia);
     packed = &lanes;
   }
