@@ -1,5 +1,6 @@
 // The separating-axis search of two boxes (max_separation, which takes two edges at a time in the
-// lanes of a 128-bit register, or four in a 256-bit one where the CPU has AVX2) against its
+// lanes of a 128-bit register, or four in a 256-bit one where the CPU has AVX2, and
+// box_separations, both boxes' edges in one call) against its
 // definition worked out one edge and one corner at a time: the same edge and the same separation
 // to the bit, by every path this machine can take, over boxes placed at random and boxes lying
 // exactly on each other, where separations tie.
@@ -36,14 +37,21 @@ gp::WorldShape box(double width, double height, const gp::Vec2& position, double
 }
 
 void check_same(const gp::WorldShape& a, const gp::WorldShape& b) {
-  const gp::Hull hull_a = gp::hull_of(std::get<gp::PolygonView>(gp::view_of(a.geometry)));
-  const gp::Hull hull_b = gp::hull_of(std::get<gp::PolygonView>(gp::view_of(b.geometry)));
-  const gp::EdgeSeparation expected = by_definition(hull_a, hull_b);
-  const auto check = [&](const gp::EdgeSeparation& found) {
+  const auto polygon_a = std::get<gp::PolygonView>(gp::view_of(a.geometry));
+  const auto polygon_b = std::get<gp::PolygonView>(gp::view_of(b.geometry));
+  const gp::Hull hull_a = gp::hull_of(polygon_a);
+  const gp::Hull hull_b = gp::hull_of(polygon_b);
+  const auto same = [](const gp::EdgeSeparation& found, const gp::EdgeSeparation& expected) {
     REQUIRE(found.edge == expected.edge);
     REQUIRE(std::bit_cast<std::uint64_t>(found.separation) ==
             std::bit_cast<std::uint64_t>(expected.separation));
   };
+  const gp::EdgeSeparation expected = by_definition(hull_a, hull_b);
+  const auto check = [&](const gp::EdgeSeparation& found) { same(found, expected); };
+  const gp::BoxSeparations both_ways =
+      gp::box_separations(gp::box_hull_of(polygon_a), gp::box_hull_of(polygon_b));
+  same(both_ways.a, expected);
+  same(both_ways.b, by_definition(hull_b, hull_a));
   check(gp::max_separation(hull_a, hull_b));
   for (const gp::Lanes lanes : {gp::Lanes::kOne, gp::Lanes::kTwo, gp::Lanes::kFour}) {
     if (lanes > gp::widest_lanes()) continue;

@@ -4,6 +4,7 @@
 // distance. Internal to collision/.
 
 #include <array>
+#include <limits>
 #include <span>
 #include <variant>
 
@@ -23,7 +24,27 @@ struct Hull {
   int next(int index) const { return index + 1 == count() ? 0 : index + 1; }
 };
 
-Hull hull_of(const PolygonView& polygon);
+inline Hull hull_of(const PolygonView& polygon) {
+  return {polygon.vertices, polygon.normals, 0.0};
+}
+
+/// A box's outline: a Hull whose four vertices are known when compiled, so that the narrowphase's
+/// loops over them unroll and its calls inline. Gives the same bits as the Hull of the same box.
+struct BoxHull {
+  static constexpr double radius = 0.0;
+  std::span<const Vec2, 4> vertices;
+  std::span<const Vec2, 4> normals;
+  static constexpr int count() { return 4; }
+  static constexpr int next(int index) { return index == 3 ? 0 : index + 1; }
+};
+
+/// Whether `polygon` is a box (four vertices): box_hull_of then views it.
+inline bool is_box(const PolygonView& polygon) {
+  return polygon.vertices.size() == 4;
+}
+inline BoxHull box_hull_of(const PolygonView& polygon) {
+  return {polygon.vertices.first<4>(), polygon.normals.first<4>()};
+}
 
 /// A segment as the two edges a→b and b→a; holds the storage its Hull views.
 class SegmentOutline {
@@ -65,8 +86,28 @@ EdgeSeparation max_separation_of_boxes(std::span<const Vec2, 4> vertices,
                                        std::span<const Vec2, 4> normals,
                                        std::span<const Vec2, 4> other, Lanes lanes);
 
-/// The edge of `hull` whose normal is most nearly opposite `normal`: the edge that meets the
-/// reference edge with that normal.
-int incident_edge(const Hull& hull, const Vec2& normal);
+/// max_separation of box `a` against box `b` and of `b` against `a`, the widest lanes at a time:
+/// the same edges and separations to the bit as max_separation's.
+struct BoxSeparations {
+  EdgeSeparation a;  ///< a's edge along whose normal b is farthest out
+  EdgeSeparation b;  ///< b's edge along whose normal a is farthest out
+};
+BoxSeparations box_separations(const BoxHull& a, const BoxHull& b);
+
+/// The edge of `hull` (a Hull or a BoxHull) whose normal is most nearly opposite `normal`: the
+/// edge that meets the reference edge with that normal.
+template <typename Outline>
+int incident_edge(const Outline& hull, const Vec2& normal) {
+  int best = 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < hull.count(); ++i) {
+    const double alignment = normal.dot(hull.normals[i]);
+    if (alignment < lowest) {
+      lowest = alignment;
+      best = i;
+    }
+  }
+  return best;
+}
 
 }  // namespace gp

@@ -77,8 +77,9 @@ ContactManifold collide_hull_circle(const Hull& hull, const Circle& circle, doub
 
 /// Clips the incident edge of one hull against the side planes of the reference edge of the
 /// other, keeping the clipped ends that are within `margin` of the reference face: 2 points when
-/// the edges lie against each other, 1 when only a corner reaches.
-ContactManifold clip(const Hull& reference, int reference_edge, const Hull& incident,
+/// the edges lie against each other, 1 when only a corner reaches. `Outline`: Hull or BoxHull.
+template <typename Outline>
+ContactManifold clip(const Outline& reference, int reference_edge, const Outline& incident,
                      int incident_edge, bool reference_is_b, double margin) {
   ContactManifold manifold;
   const Vec2& n = reference.normals[reference_edge];  // out of the reference, towards incident
@@ -138,15 +139,14 @@ ContactManifold clip(const Hull& reference, int reference_edge, const Hull& inci
   return manifold;
 }
 
-/// Separating axis test between two hulls, then clipping; or, when their cores are apart and
-/// closest at a vertex of each, one point along the line between those vertices.
-ContactManifold collide_hulls(const Hull& a, const Hull& b, double margin) {
+/// The contact of two outlines (Hull or BoxHull) whose separating axis test found `best_a` (a's
+/// edges against b) and `best_b`, neither separating them: clipping, or, when their cores are
+/// apart and closest at a vertex of each, one point along the line between those vertices.
+template <typename Outline>
+ContactManifold contact_of_outlines(const Outline& a, const Outline& b,
+                                    const EdgeSeparation& best_a, const EdgeSeparation& best_b,
+                                    double margin) {
   const double radius = a.radius + b.radius;
-  const EdgeSeparation best_a = max_separation(a, b);
-  if (best_a.separation > radius + margin) return {};
-  const EdgeSeparation best_b = max_separation(b, a);
-  if (best_b.separation > radius + margin) return {};
-
   // The reference face stays on A unless B's separates clearly more, so that it does not flip
   // between near-equal faces from frame to frame and the feature ids stay put.
   const bool reference_is_b = best_b.separation > best_a.separation + kContactTolerance;
@@ -178,6 +178,24 @@ ContactManifold collide_hulls(const Hull& a, const Hull& b, double margin) {
                         : clip(a, edge_a, b, edge_b, false, margin);
 }
 
+/// Separating axis test between two hulls, then their contact (contact_of_outlines).
+ContactManifold collide_hulls(const Hull& a, const Hull& b, double margin) {
+  const double reach = a.radius + b.radius + margin;
+  const EdgeSeparation best_a = max_separation(a, b);
+  if (best_a.separation > reach) return {};
+  const EdgeSeparation best_b = max_separation(b, a);
+  if (best_b.separation > reach) return {};
+  return contact_of_outlines(a, b, best_a, best_b, margin);
+}
+
+/// The same for two boxes, both ways of the test at once and the contact's loops unrolled: a box
+/// pile's narrowphase is mostly this.
+ContactManifold collide_boxes(const BoxHull& a, const BoxHull& b, double margin) {
+  const BoxSeparations best = box_separations(a, b);
+  if (best.a.separation > margin || best.b.separation > margin) return {};
+  return contact_of_outlines(a, b, best.a, best.b, margin);
+}
+
 bool is_bare_line(const GeometryView& geometry) {
   const auto* segment = std::get_if<Segment>(&geometry);
   return segment != nullptr && segment->radius == 0.0;
@@ -186,6 +204,11 @@ bool is_bare_line(const GeometryView& geometry) {
 }  // namespace
 
 ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin) {
+  const auto* polygon_a = std::get_if<PolygonView>(&a);
+  const auto* polygon_b = std::get_if<PolygonView>(&b);
+  if (polygon_a != nullptr && polygon_b != nullptr && is_box(*polygon_a) && is_box(*polygon_b)) {
+    return collide_boxes(box_hull_of(*polygon_a), box_hull_of(*polygon_b), margin);
+  }
   const auto* circle_a = std::get_if<Circle>(&a);
   const auto* circle_b = std::get_if<Circle>(&b);
   if (circle_a != nullptr && circle_b != nullptr) {
