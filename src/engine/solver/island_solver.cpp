@@ -209,6 +209,8 @@ void release_large(IslandScratch& scratch) {
   scratch.initial = Eigen::VectorXd();
   scratch.impulse = Eigen::VectorXd();
   scratch.unloaded = std::vector<std::uint8_t>();
+  scratch.ordered_contacts = std::vector<std::uint32_t>();
+  scratch.order.release();
   scratch.lcp.release();
 }
 
@@ -232,14 +234,25 @@ Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands
   return Reason::kNone;
 }
 
-// The points of the island of `root` into scratch.rows.
+// The points of the island of `root` into scratch.rows: those of an island solved with a sparse
+// K in an order whose factor stays sparse (island_contacts_in_order), the others in the
+// contacts' own order.
 void list_points(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-                 IslandScratch& scratch) {
+                 const BodyInertia& inertia, IslandScratch& scratch) {
   scratch.rows.clear();
-  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
-    for (int k = 0; k < contacts[islands.order[e]].count(); ++k) {
-      scratch.rows.push_back({islands.order[e], static_cast<std::uint32_t>(k)});
+  const auto list = [&](std::uint32_t contact) {
+    for (int k = 0; k < contacts[contact].count(); ++k) {
+      scratch.rows.push_back({contact, static_cast<std::uint32_t>(k)});
     }
+  };
+  if (islands.points[root] > kDenseIslandPoints) {
+    island_contacts_in_order(contacts, islands, root, inertia, scratch.order,
+                             scratch.ordered_contacts);
+    for (const std::uint32_t contact : scratch.ordered_contacts) list(contact);
+    return;
+  }
+  for (std::uint32_t e = islands.island_start[root]; e < islands.island_end[root]; ++e) {
+    list(islands.order[e]);
   }
 }
 
@@ -318,7 +331,7 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
     for (std::size_t r = first; r < last; ++r) {
       const Reason reason = reason_to_solve(contacts, islands, r, bodies, s, active);
       if (reason == Reason::kNone) continue;
-      list_points(contacts, islands, r, room);
+      list_points(contacts, islands, r, bodies.inertia, room);
       // An island let in by its uneven masses, which sequential impulses cannot hold up, is
       // worth more rounds than one they can.
       NormalLcpOptions options;

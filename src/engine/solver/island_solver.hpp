@@ -14,6 +14,7 @@
 #include <Eigen/SparseCore>
 
 #include "engine/solver/contact_islands.hpp"
+#include "engine/solver/island_order.hpp"
 #include "engine/solver/normal_lcp.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
@@ -47,6 +48,9 @@ struct IslandScratch {
     std::uint32_t count = 0;
   };
   std::vector<Row> rows;  // the island's points
+  // Of an island solved with a sparse K: its contacts in the order its points are listed in.
+  std::vector<std::uint32_t> ordered_contacts;
+  IslandOrderScratch order;
   // 1/kg: effective-mass matrix of the island's points, dense for an island of at most
   // kDenseIslandPoints, else sparse (from its entries, body by body).
   Eigen::MatrixXd k_dense;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace gp {
 
@@ -44,41 +43,30 @@ void speeds_after_change(const SparseK& k, const Eigen::Ref<const Eigen::VectorX
   speed += w0 + kCompliance * scratch.diagonal.head(n).cwiseProduct(change);
 }
 
-// The order in which a round takes the points, into scratch.point_at: a dense K's own.
-void order_points(const Eigen::Ref<const Eigen::MatrixXd>& k, NormalLcpScratch& scratch) {
-  scratch.point_at.resize(static_cast<std::size_t>(k.rows()));
-  std::iota(scratch.point_at.begin(), scratch.point_at.end(), 0);
+// Readies `scratch` for the rounds of a problem of a sparse K: the factor of the last problem
+// serves none of them. K's points come in an order whose factor stays sparse
+// (island_contacts_in_order), which every round's pushing points keep.
+void start_rounds(const SparseK&, NormalLcpScratch& scratch) {
+  if (!scratch.sparse) scratch.sparse = std::make_unique<SparseLcpScratch>();
+  scratch.sparse->factored_points.clear();
 }
 
-// A sparse K's: one fill-reducing order (AMD) for every round, whose pushing points keep it;
-// the ordering would otherwise be a third of a round's cost at 292 points. K's rows and columns in
-// that order go to scratch.k_ordered.
-void order_points(const SparseK& k, NormalLcpScratch& scratch) {
-  if (!scratch.sparse) scratch.sparse = std::make_unique<SparseLcpScratch>();
-  SparseLcpScratch& sparse = *scratch.sparse;
-  // K is symmetric and stored whole: its lower triangle alone spares the ordering forming K + Kᵀ
-  // (a transposed copy and a sum of 600,000 entries in a 100-row pyramid), for the same pattern.
-  sparse.ordering(k.selfadjointView<Eigen::Lower>(), sparse.to_point);
-  sparse.to_position = sparse.to_point.inverse();
-  sparse.k_ordered = k.twistedBy(sparse.to_position);
-  sparse.factored_positions.clear();
-  const int* const to_point = sparse.to_point.indices().data();
-  scratch.point_at.assign(to_point, to_point + k.rows());
-}
+// A dense K's need nothing.
+void start_rounds(const Eigen::Ref<const Eigen::MatrixXd>&, NormalLcpScratch&) {}
 
 // The pushing points' changes Δλ (unknown, set to 0) and the free points' (−λ₀) into
-// scratch.change, and the pushing points' positions in the order, ascending, into
-// scratch.pushing_rows, each point's row among them into scratch.pushing_row (−1: free).
+// scratch.change, and the pushing points, ascending, into scratch.pushing_rows, each point's row
+// among them into scratch.pushing_row (−1: free).
 void list_pushing(const Eigen::Ref<const Eigen::VectorXd>& start, NormalLcpScratch& scratch) {
   scratch.pushing_rows.clear();
-  for (std::size_t q = 0; q < scratch.point_at.size(); ++q) {
-    const int i = scratch.point_at[q];
+  for (Eigen::Index point = 0; point < start.size(); ++point) {
+    const auto i = static_cast<std::size_t>(point);
     scratch.pushing_row[i] = -1;
     if (scratch.pushing[i]) {
       scratch.pushing_row[i] = static_cast<int>(scratch.pushing_rows.size());
-      scratch.pushing_rows.push_back(static_cast<int>(q));
+      scratch.pushing_rows.push_back(static_cast<int>(point));
     }
-    scratch.change(i) = scratch.pushing[i] ? 0.0 : -start(i);
+    scratch.change(point) = scratch.pushing[i] ? 0.0 : -start(point);
   }
 }
 
@@ -115,25 +103,25 @@ RoundSolve solve_listed(const Eigen::Ref<const Eigen::MatrixXd>& k,
   return {true, a > 0};
 }
 
-// Factors K with its compliance restricted to the pushing points, rows in the order, into
+// Factors K with its compliance restricted to the pushing points, rows in K's order, into
 // sparse.factor, and makes them the factored set. Returns false if it is not positive definite.
-bool factor_pushing(NormalLcpScratch& scratch) {
+bool factor_pushing(const SparseK& k, NormalLcpScratch& scratch) {
   SparseLcpScratch& sparse = *scratch.sparse;
   const auto a = static_cast<Eigen::Index>(scratch.pushing_rows.size());
   SparseK& k_pushing = sparse.k_pushing;
   k_pushing.resize(a, a);
-  k_pushing.reserve(sparse.k_ordered.nonZeros());
+  k_pushing.reserve(k.nonZeros());
   for (Eigen::Index q = 0; q < a; ++q) {
     k_pushing.startVec(q);
-    for (SparseK::InnerIterator entry(sparse.k_ordered, scratch.pushing_rows[q]); entry; ++entry) {
-      const int r = scratch.pushing_row[scratch.point_at[entry.row()]];
+    for (SparseK::InnerIterator entry(k, scratch.pushing_rows[q]); entry; ++entry) {
+      const int r = scratch.pushing_row[static_cast<std::size_t>(entry.row())];
       if (r < 0) continue;
       k_pushing.insertBack(r, q) = r == q ? entry.value() * (1.0 + kCompliance) : entry.value();
     }
   }
   k_pushing.finalize();
   sparse.factor.compute(k_pushing);
-  sparse.factored_positions = scratch.pushing_rows;
+  sparse.factored_points = scratch.pushing_rows;
   sparse.let_go.clear();
   return sparse.factor.info() == Eigen::Success;
 }
@@ -142,23 +130,23 @@ bool factor_pushing(NormalLcpScratch& scratch) {
 // `most_let_go` of its points have let go since (into sparse.let_go, as its rows).
 bool factor_serves(std::size_t most_let_go, NormalLcpScratch& scratch) {
   SparseLcpScratch& sparse = *scratch.sparse;
-  if (sparse.factored_positions.empty()) return false;
+  if (sparse.factored_points.empty()) return false;
   sparse.let_go.clear();
-  for (std::size_t row = 0; row < sparse.factored_positions.size(); ++row) {
-    const int i = scratch.point_at[sparse.factored_positions[row]];
+  for (std::size_t row = 0; row < sparse.factored_points.size(); ++row) {
+    const int i = sparse.factored_points[row];
     if (scratch.pushing[i]) continue;
     if (sparse.let_go.size() == most_let_go) return false;
     sparse.let_go.push_back(static_cast<int>(row));
   }
   // The factored points still pushing are all the pushing points only if they are as many.
-  return sparse.factored_positions.size() - sparse.let_go.size() == scratch.pushing_rows.size();
+  return sparse.factored_points.size() - sparse.let_go.size() == scratch.pushing_rows.size();
 }
 
 // W = L⁻¹ E into sparse.border, L Lᵀ being the factored matrix and E the identity's columns of
 // the let-go rows, and the Cholesky factor of WᵀW, their block of the factored matrix's inverse.
 // Returns false if WᵀW is not positive definite in floating point.
 bool border(SparseLcpScratch& sparse) {
-  const auto rows = static_cast<Eigen::Index>(sparse.factored_positions.size());
+  const auto rows = static_cast<Eigen::Index>(sparse.factored_points.size());
   SparseK& w = sparse.border;
   w.resize(rows, static_cast<Eigen::Index>(sparse.let_go.size()));
   // Column by column through one dense column, whose solve skips its zeros: W holds a few hundred
@@ -207,12 +195,12 @@ RoundSolve solve_listed(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd
                         const NormalLcpOptions& options, NormalLcpScratch& scratch) {
   speeds_after_change(k, w0, scratch);
   if (scratch.pushing_rows.empty()) return {true, false};
+  const bool bordered = factor_serves(options.most_let_go, scratch) && border(*scratch.sparse);
+  if (!bordered && !factor_pushing(k, scratch)) return {false, true};
   SparseLcpScratch& sparse = *scratch.sparse;
-  const bool bordered = factor_serves(options.most_let_go, scratch) && border(sparse);
-  if (!bordered && !factor_pushing(scratch)) return {false, true};
-  const auto rows = static_cast<Eigen::Index>(sparse.factored_positions.size());
+  const auto rows = static_cast<Eigen::Index>(sparse.factored_points.size());
   const auto point_of = [&](Eigen::Index row) {
-    return scratch.point_at[sparse.factored_positions[static_cast<std::size_t>(row)]];
+    return sparse.factored_points[static_cast<std::size_t>(row)];
   };
   // The speed the free points' letting go leaves, to be undone by the pushing points.
   Eigen::VectorXd& target = sparse.target;
@@ -260,7 +248,7 @@ NormalLcpResult solve_lcp(const Matrix& k, const Eigen::Ref<const Eigen::VectorX
     impulse_scale = std::max(impulse_scale, start(i) + std::max(-w0(i) / k_ii, 0.0));
     speed_scale = std::max(speed_scale, std::abs(w0(i)) + kCompliance * k_ii * start(i));
   }
-  order_points(k, scratch);
+  start_rounds(k, scratch);
   const double impulse_tolerance = kRoundOff * impulse_scale;
   double speed_tolerance = kRoundOff * speed_scale;
   // A stack starting at rest pushes at every level, not only where gravity has already made the
@@ -324,7 +312,6 @@ void NormalLcpScratch::reserve(Eigen::Index points) {
   pushing.resize(static_cast<std::size_t>(points));
   wrong.resize(static_cast<std::size_t>(points));
   pushing_row.resize(static_cast<std::size_t>(points));
-  point_at.reserve(static_cast<std::size_t>(points));
   pushing_rows.reserve(static_cast<std::size_t>(points));
 }
 

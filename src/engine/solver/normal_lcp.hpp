@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <Eigen/Dense>
-#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -21,24 +20,18 @@ namespace gp {
 /// row.
 using SparseK = Eigen::SparseMatrix<double>;
 
-/// What solve_normal_lcp keeps for a sparse K: the order of its points (AMD), whose room a pile's
-/// points, numbered as its contacts come, would fill the factor in, and the last factor of the
-/// solve, with the pushing set it was made for. A later round whose pushing points are all among
-/// that set's, less a few that let go, is solved with that factor, bordered by the rows of those
-/// few, rather than with a new one: a pile's later rounds free tens of its tens of thousands of
-/// points.
+/// What solve_normal_lcp keeps for a sparse K: the last factor of the solve, with the pushing set
+/// it was made for. A later round whose pushing points are all among that set's, less a few that
+/// let go, is solved with that factor, bordered by the rows of those few, rather than with a new
+/// one: a pile's later rounds free tens of its tens of thousands of points.
 struct SparseLcpScratch {
-  Eigen::AMDOrdering<int> ordering;
-  /// to_point maps a position in the order to a point, to_position back.
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> to_point, to_position;
-  SparseK k_ordered;  ///< K, rows and columns in that order
   SparseK k_pushing;  ///< K with its compliance, restricted to the factored pushing set
   Eigen::SimplicialLLT<SparseK, Eigen::Lower, Eigen::NaturalOrdering<int>> factor;
-  std::vector<int> factored_positions;  ///< per row of `factor`: its point's position in the order
-  std::vector<int> let_go;              ///< rows of `factor` whose points no longer push
-  SparseK border;                       ///< L⁻¹ times the identity's columns of those rows
-  Eigen::MatrixXd gram;                 ///< its Gram matrix (lower triangle), those rows'
-                                        ///< block of the factored matrix's inverse
+  std::vector<int> factored_points;         ///< per row of `factor`: its point
+  std::vector<int> let_go;                  ///< rows of `factor` whose points no longer push
+  SparseK border;                           ///< L⁻¹ times the identity's columns of those rows
+  Eigen::MatrixXd gram;                     ///< its Gram matrix (lower triangle), those rows'
+                                            ///< block of the factored matrix's inverse
   Eigen::LLT<Eigen::MatrixXd> gram_factor;  ///< of `gram`
   Eigen::VectorXd target;                   ///< the right-hand side over the rows of `factor`
   /// A column over the rows of `factor`: each column of W as it is solved, then what a bordered
@@ -55,8 +48,7 @@ struct NormalLcpScratch {
   std::vector<char> pushing;      // per point: in the pushing set (w = 0) rather than free (λ = 0)
   std::vector<char> wrong;        // per point: on the wrong side of its complementarity condition
   std::vector<int> pushing_row;   // per point: its row among the pushing points, or −1
-  std::vector<int> pushing_rows;  // the pushing points' positions in the order, ascending
-  std::vector<int> point_at;      // per position in the order a round takes the points: its point
+  std::vector<int> pushing_rows;  // the pushing points, ascending
   // K with its compliance, restricted to the pushing points, of a dense K.
   Eigen::MatrixXd k_pushing_dense;
   /// Of a sparse K, made at its first solve; release_sparse() frees it.
@@ -145,8 +137,9 @@ NormalLcpResult solve_normal_lcp(const Eigen::Ref<const Eigen::MatrixXd>& k,
                                  const Eigen::Ref<const Eigen::VectorXd>& start,
                                  NormalLcpScratch& scratch, Eigen::Ref<Eigen::VectorXd> impulse,
                                  const NormalLcpOptions& options = {});
-/// The same for a sparse K, each round's pushing set in one fill-reducing order: for the large
-/// islands, where a round of the dense solve would cost the cube of their points. A round that
+/// The same for a sparse K, each round's pushing set in K's own order, which had better keep the
+/// factor sparse (island_contacts_in_order gives one): for the large islands, where a round of
+/// the dense solve would cost the cube of their points. A round that
 /// only lets a few points go (`options.most_let_go`) borders the last factor with their rows
 /// instead of making a new one, to the same solution up to round-off.
 NormalLcpResult solve_normal_lcp(const SparseK& k, const Eigen::Ref<const Eigen::VectorXd>& w0,
