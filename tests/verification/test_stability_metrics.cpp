@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include "verification/suite/stability_metrics.hpp"
 
@@ -64,6 +66,33 @@ TEST_CASE("largest_overlap: the shortest separating translation of shapes placed
           Approx(0.1).epsilon(1e-12));
     CHECK(largest_overlap({dynamic_box, dynamic_box}, {at({0, 0}), at({1.01, 0})}) == 0.0);
   }
+}
+
+TEST_CASE("largest_overlap over a crowd is the deepest of its pairs measured two at a time",
+          "[stability]") {
+  // 300 discs and boxes scattered at random over a 20 m square, overlapping here and there, a
+  // static floor among them; the sweep along x must find every pair the pairs one by one find.
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> place(-10.0, 10.0);
+  std::uniform_real_distribution<double> turn(0.0, 6.0);
+  std::vector<PeerBody> bodies{body(BodyType::Static, Shape::box(20.0, 0.5))};
+  std::vector<BodyState> states{at({0.0, -9.0})};
+  for (int i = 0; i < 300; ++i) {
+    bodies.push_back(body(BodyType::Dynamic, i % 3 == 0 ? kUnitBox : kDisc));
+    states.push_back(at({place(random), place(random)}, turn(random)));
+  }
+  double deepest = 0.0;
+  int overlapping = 0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      const double pair = largest_overlap({bodies[i], bodies[j]}, {states[i], states[j]});
+      deepest = std::max(deepest, pair);
+      overlapping += pair > 0.0 ? 1 : 0;
+    }
+  }
+  INFO(overlapping << " pairs overlap");
+  CHECK(overlapping > 50);
+  CHECK(largest_overlap(bodies, states) == deepest);
 }
 
 TEST_CASE("largest_drift and largest_speed: the farthest and fastest dynamic body", "[stability]") {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "verification/bench/workloads.hpp"
 #include "verification/suite/scene_builders.hpp"
 
 namespace gp::verification {
@@ -159,6 +160,14 @@ StabilityCase confined() {
           "apart)"};
 }
 
+StabilityCase rain() {
+  Scene s = bench::rain(1000);
+  s.duration = kDuration;
+  return {"rain of 1000 discs into a box", s, StabilityMetric::Overlap,
+          "discs falling up to 35 m onto a pile 16 deep: a solver that lets a fast disc through "
+          "the pile, or cannot hold its load, lets them sink into each other"};
+}
+
 StabilityCase far_pyramid(double x, const std::string& where) {
   Scene s = empty({0.0, -10.0});
   pyramid(s, x, 10);
@@ -177,6 +186,7 @@ std::vector<StabilityCase> stability_cases() {
           card_house(),
           arch(),
           confined(),
+          rain(),
           far_pyramid(0.0, "at the origin"),
           far_pyramid(1e4, "10 km from the origin")};
 }

@@ -32,7 +32,8 @@ struct StabilityCase {
 /// Every case, 60 Hz, 10 s, friction 0.6 unless named: pyramids of base 10 capped by a box 100,
 /// 200 and 300 times denser; a 20 m box on two small triangles; boxes created overlapping by half
 /// their size; a card house; an arch of trapezoids; discs confined in a box, more than fit; the
-/// pyramid of base 10 at the origin and 10 km away.
+/// rain of 1000 discs into a box (scenes/rain1000.json, gravity 9.81 m/s²); the pyramid of base
+/// 10 at the origin and 10 km away.
 std::vector<StabilityCase> stability_cases();
 
 }  // namespace gp::verification
