@@ -4,7 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <string>
@@ -13,6 +15,7 @@
 #include "engine/collision/narrowphase.hpp"
 #include "engine/collision/signed_distance.hpp"
 #include "engine/geometry/closest_points.hpp"
+#include "engine/geometry/world_shapes.hpp"
 
 using gp::ContactManifold;
 using gp::Shape;
@@ -458,6 +461,45 @@ TEST_CASE("Contacts agree with the signed distance for random pairs of shapes",
     }
   }
   CHECK(overlapping > 1000);
+}
+
+TEST_CASE("Shapes as WorldShapes packs them collide as their views do, to the bit",
+          "[FR:Determine-Collisions]") {
+  // Boxes against boxes (the packed path's own), and every other pair of kinds (its fallback).
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<Vec2> triangle{{0.0, 0.0}, {1.0, 0.0}, {0.3, 0.8}};
+  const std::vector<Shape> shapes{kUnitBox, Shape::box(2.0, 0.5), Shape::circle(0.4),
+                                  Shape::polygon(triangle),
+                                  Shape::segment({-0.5, 0.0}, {0.5, 0.1}, 0.1)};
+  const auto same_bits = [](double x, double y) {
+    return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
+  };
+  int touching = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Shape& a = shapes[static_cast<std::size_t>(unit(random) * 5.0) % 5];
+    const Shape& b = shapes[trial % 2 == 0 ? 0 : static_cast<std::size_t>(unit(random) * 5.0) % 5];
+    gp::WorldShapes world;
+    world.lay_out(2, 2, 8);
+    world.place(0, gp::view_of(a.geometry()), gp::Transform({0.0, 0.0}, 6.3 * unit(random)));
+    world.place(
+        1, gp::view_of(b.geometry()),
+        gp::Transform({2.0 * unit(random) - 1.0, 2.0 * unit(random) - 1.0}, 6.3 * unit(random)));
+    const ContactManifold viewed = gp::collide(world.geometry(0), world.geometry(1), 0.05);
+    const ContactManifold packed = gp::collide(world.packed(0), world.packed(1), 0.05);
+    INFO("trial " << trial);
+    REQUIRE(packed.count == viewed.count);
+    touching += viewed.count > 0 ? 1 : 0;
+    for (int k = 0; k < viewed.count; ++k) {
+      CHECK(same_bits(packed.normal.x(), viewed.normal.x()));
+      CHECK(same_bits(packed.normal.y(), viewed.normal.y()));
+      CHECK(same_bits(packed.points[k].position.x(), viewed.points[k].position.x()));
+      CHECK(same_bits(packed.points[k].position.y(), viewed.points[k].position.y()));
+      CHECK(same_bits(packed.points[k].depth, viewed.points[k].depth));
+      CHECK(packed.points[k].id == viewed.points[k].id);
+    }
+  }
+  CHECK(touching > 1000);
 }
 
 }  // namespace test_collision

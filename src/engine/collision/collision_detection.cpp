@@ -108,7 +108,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     auto old = previous.begin();
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const ShapePair& p = pairs[i];
-      const ContactManifold m = collide(world.geometry(p.first), world.geometry(p.second), margin_);
+      const ContactManifold m = collide(world.packed(p.first), world.packed(p.second), margin_);
       if (m.count == 0) continue;
       Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
       warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale,
@@ -134,7 +134,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     each_range([&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const ShapePair& p = pairs[first + i];
-        manifolds_[i] = collide(world.geometry(p.first), world.geometry(p.second), margin_);
+        manifolds_[i] = collide(world.packed(p.first), world.packed(p.second), margin_);
         counts_[i] = static_cast<std::uint8_t>(manifolds_[i].count);
       }
     });

@@ -232,4 +232,15 @@ ContactManifold collide(const GeometryView& a, const GeometryView& b, double mar
   });
 }
 
+ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin) {
+  if (a.kind() == ShapeKind::kPolygon && b.kind() == ShapeKind::kPolygon) {
+    const PolygonView polygon_a = a.polygon();
+    const PolygonView polygon_b = b.polygon();
+    if (is_box(polygon_a) && is_box(polygon_b)) {
+      return collide_boxes(box_hull_of(polygon_a), box_hull_of(polygon_b), margin);
+    }
+  }
+  return collide(a.view(), b.view(), margin);
+}
+
 }  // namespace gp

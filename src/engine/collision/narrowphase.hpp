@@ -2,6 +2,7 @@
 // Exact contact between two placed shapes (FR:Determine-Collisions).
 
 #include "engine/collision/manifold.hpp"
+#include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/world_shape.hpp"
 
 namespace gp {
@@ -19,6 +20,9 @@ inline constexpr double kContactTolerance = 5e-4;
 /// face is taken from a: call with the same order every frame for stable feature ids.
 /// Does not allocate.
 ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin);
+/// The same for two shapes as WorldShapes packs them: two boxes go to the box path without being
+/// viewed first (a box pile's narrowphase calls this for every pair).
+ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin);
 /// The same for placed shapes, whose boxes it does not need.
 inline ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin) {
   return collide(a.geometry, b.geometry, margin);

@@ -49,6 +49,8 @@ class WorldShapes {
   }
   /// The geometry of shape `i` as placed, without its box.
   GeometryView geometry(std::size_t i) const { return shapes_[i].view(); }
+  /// The same, packed as it is kept: what the narrowphase reads.
+  const PackedGeometry& packed(std::size_t i) const { return shapes_[i]; }
   /// Shape `i` as placed, viewed: made when asked for, so hold it by value or by a const
   /// reference bound to the call.
   WorldShapeView operator[](std::size_t i) const { return {shapes_[i].view(), bounds(i)}; }
