@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <Eigen/OrderingMethods>
@@ -123,6 +124,54 @@ TEST_CASE(
   // 115,377 entries against 217,677 for 30 rows: the contacts' own order goes row by row, whose
   // band widens with the base.
   CHECK(unordered > 1.5 * static_cast<double>(ours));
+}
+
+TEST_CASE("Two contacts between the same two bodies are each other's neighbour once",
+          "[FR:Determine-Collision-Response-Over-Time]") {
+  // A body of two shapes touching another twice (contacts 0 and 1, bodies 2 and 1), a third body
+  // on it, and the static ground (body 0) under body 1.
+  gp::BodyInertia inertia{{0.0, 1.0, 1.0, 1.0}, {0.0, 1.0, 1.0, 1.0}};
+  gp::ContactSet contacts;
+  for (const auto& [a, b] : {std::pair<gp::BodyId, gp::BodyId>{2, 1}, {2, 1}, {3, 2}, {1, 0}}) {
+    gp::Contact& c = contacts.append(1);
+    c.body_a = a;
+    c.body_b = b;
+    c.normal = {0.0, 1.0};
+  }
+  gp::ContactIslands islands;
+  islands.find(contacts, inertia);
+  gp::IslandOrderScratch scratch;
+  std::vector<std::uint32_t> ordered;
+  gp::island_contacts_in_order(contacts, islands, 1, inertia, scratch, ordered);
+  std::vector<std::uint32_t> sorted = ordered;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(sorted == std::vector<std::uint32_t>{0, 1, 2, 3});
+  // The neighbours' lower triangle, by the contacts' places in the island: every entry once, in
+  // increasing rows, the diagonal included.
+  const Eigen::SparseMatrix<double>& n = scratch.neighbours;
+  REQUIRE(n.rows() == 4);
+  Eigen::Matrix4d dense = Eigen::Matrix4d::Zero();
+  for (Eigen::Index k = 0; k < n.outerSize(); ++k) {
+    Eigen::Index last = -1;
+    for (Eigen::SparseMatrix<double>::InnerIterator e(n, k); e; ++e) {
+      CHECK(e.row() > last);
+      last = e.row();
+      dense(e.row(), k) += e.value();
+    }
+  }
+  // Places 0 and 1 share bodies 1 and 2, 2 shares body 2 with them, 3 body 1 with them.
+  std::vector<std::uint32_t> place(4);
+  for (std::uint32_t k = 0; k < 4; ++k) place[islands.order[islands.island_start[1] + k]] = k;
+  const auto entry = [&](std::uint32_t c, std::uint32_t d) {
+    const std::uint32_t i = std::max(place[c], place[d]);
+    const std::uint32_t j = std::min(place[c], place[d]);
+    return dense(i, j);
+  };
+  CHECK(entry(0, 1) == 1.0);
+  CHECK(entry(0, 2) == 1.0);
+  CHECK(entry(1, 3) == 1.0);
+  CHECK(entry(2, 3) == 0.0);
+  for (std::uint32_t c = 0; c < 4; ++c) CHECK(entry(c, c) == 1.0);
 }
 
 }  // namespace test_island_order
