@@ -196,6 +196,12 @@ ContactManifold collide_boxes(const BoxHull& a, const BoxHull& b, double margin)
   return contact_of_outlines(a, b, best.a, best.b, margin);
 }
 
+/// Two polygons: two boxes by collide_boxes, any others by collide_hulls.
+ContactManifold collide_polygons(const PolygonView& a, const PolygonView& b, double margin) {
+  if (is_box(a) && is_box(b)) return collide_boxes(box_hull_of(a), box_hull_of(b), margin);
+  return collide_hulls(hull_of(a), hull_of(b), margin);
+}
+
 bool is_bare_line(const GeometryView& geometry) {
   const auto* segment = std::get_if<Segment>(&geometry);
   return segment != nullptr && segment->radius == 0.0;
@@ -206,8 +212,8 @@ bool is_bare_line(const GeometryView& geometry) {
 ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin) {
   const auto* polygon_a = std::get_if<PolygonView>(&a);
   const auto* polygon_b = std::get_if<PolygonView>(&b);
-  if (polygon_a != nullptr && polygon_b != nullptr && is_box(*polygon_a) && is_box(*polygon_b)) {
-    return collide_boxes(box_hull_of(*polygon_a), box_hull_of(*polygon_b), margin);
+  if (polygon_a != nullptr && polygon_b != nullptr) {
+    return collide_polygons(*polygon_a, *polygon_b, margin);
   }
   const auto* circle_a = std::get_if<Circle>(&a);
   const auto* circle_b = std::get_if<Circle>(&b);
@@ -234,11 +240,7 @@ ContactManifold collide(const GeometryView& a, const GeometryView& b, double mar
 
 ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin) {
   if (a.kind() == ShapeKind::kPolygon && b.kind() == ShapeKind::kPolygon) {
-    const PolygonView polygon_a = a.polygon();
-    const PolygonView polygon_b = b.polygon();
-    if (is_box(polygon_a) && is_box(polygon_b)) {
-      return collide_boxes(box_hull_of(polygon_a), box_hull_of(polygon_b), margin);
-    }
+    return collide_polygons(a.polygon(), b.polygon(), margin);
   }
   return collide(a.view(), b.view(), margin);
 }

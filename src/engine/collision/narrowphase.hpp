@@ -20,8 +20,8 @@ inline constexpr double kContactTolerance = 5e-4;
 /// face is taken from a: call with the same order every frame for stable feature ids.
 /// Does not allocate.
 ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin);
-/// The same for two shapes as WorldShapes packs them: two boxes go to the box path without being
-/// viewed first (a box pile's narrowphase calls this for every pair).
+/// The same for two shapes as WorldShapes packs them: two polygons (two boxes: a box pile's every
+/// pair) are collided without being viewed first.
 ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin);
 /// The same for placed shapes, whose boxes it does not need.
 inline ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin) {
