@@ -7,8 +7,7 @@ namespace gp {
 void IslandOrderScratch::release() {
   // Moved-from temporaries take the room with them; `= {}` would keep a vector's capacity.
   ends = std::vector<End>();
-  sides = std::vector<Span>();
-  side_count = std::vector<std::uint8_t>();
+  sides = std::vector<ItemEnds>();
   Eigen::SparseMatrix<double>().swap(neighbours);
   order.resize(0);
 }
@@ -18,39 +17,18 @@ namespace {
 // The neighbours of each of the island's `count` contacts into scratch.neighbours: column k holds
 // the contacts from k on that share a movable body with contact k, k itself included.
 void find_neighbours(std::uint32_t count, IslandOrderScratch& scratch) {
-  using Span = IslandOrderScratch::Span;
-  const auto& ends = scratch.ends;
-  scratch.sides.assign(2 * std::size_t{count}, Span{});
-  scratch.side_count.assign(count, 0);
-  std::size_t entries = count;
-  for (std::uint32_t first = 0; first < ends.size();) {
-    std::uint32_t last = first;
-    while (last < ends.size() && ends[last].body == ends[first].body) ++last;
-    for (std::uint32_t e = first; e < last; ++e) {
-      const std::uint32_t k = ends[e].contact;
-      scratch.sides[2 * std::size_t{k} + scratch.side_count[k]++] = {first, last};
-    }
-    entries += std::size_t{last - first} * (last - first) / 2;
-    first = last;
-  }
+  const auto contact_of = [](const IslandOrderScratch::End& e) { return e.contact; };
+  // Each pair of contacts on a body is entered once, in the lower triangle.
+  const std::size_t entries = find_item_ends(scratch.ends, count, contact_of, scratch.sides);
   Eigen::SparseMatrix<double>& neighbours = scratch.neighbours;
   neighbours.resize(count, count);
-  neighbours.reserve(static_cast<Eigen::Index>(entries));
+  neighbours.reserve(static_cast<Eigen::Index>(entries / 2 + count));
   for (std::uint32_t k = 0; k < count; ++k) {
     neighbours.startVec(k);
-    // The contacts on each of its bodies, in increasing order: merged, without those before k.
-    const Span s = scratch.sides[2 * std::size_t{k}];
-    const Span t = scratch.side_count[k] == 2 ? scratch.sides[2 * std::size_t{k} + 1] : Span{};
-    std::uint32_t e = s.first;
-    std::uint32_t o = t.first;
-    while (e < s.last || o < t.last) {
-      const std::uint32_t row_e = e < s.last ? ends[e].contact : count;
-      const std::uint32_t row_o = o < t.last ? ends[o].contact : count;
-      const std::uint32_t row = std::min(row_e, row_o);
-      e += row_e == row ? 1 : 0;
-      o += row_o == row ? 1 : 0;
-      if (row >= k) neighbours.insertBack(row, k) = 1.0;
-    }
+    for_each_coupled(scratch.ends, scratch.sides[k], contact_of,
+                     [&](std::uint32_t row, std::uint32_t, std::uint32_t) {
+                       if (row >= k) neighbours.insertBack(row, k) = 1.0;
+                     });
   }
   neighbours.finalize();
 }

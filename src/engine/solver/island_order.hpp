@@ -12,6 +12,7 @@
 #include <Eigen/SparseCore>
 
 #include "engine/solver/contact_islands.hpp"
+#include "engine/solver/coupled_items.hpp"
 
 namespace gp {
 
@@ -22,14 +23,8 @@ struct IslandOrderScratch {
     BodyId body;
     std::uint32_t contact;
   };
-  // The ends of a body, [first, last) in `ends`.
-  struct Span {
-    std::uint32_t first = 0, last = 0;
-  };
-  std::vector<End> ends;  // by body, then contact
-  // Per contact: the ends of its movable bodies (at most two; the second empty for one body).
-  std::vector<Span> sides;
-  std::vector<std::uint8_t> side_count;
+  std::vector<End> ends;        // by body, then contact
+  std::vector<ItemEnds> sides;  // per contact: its ends, by body
   // Two contacts are neighbours where they share a movable body: the lower triangle and the
   // diagonal of that graph, which AMD asks for.
   Eigen::SparseMatrix<double> neighbours;

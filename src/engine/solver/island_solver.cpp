@@ -25,19 +25,8 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
   std::sort(scratch.ends.begin(), scratch.ends.end(), [](const End& e, const End& f) {
     return e.body != f.body ? e.body < f.body : e.row < f.row;
   });
-  scratch.row_ends.assign(n, {});
-  std::size_t entries = 0;
-  for (std::uint32_t first = 0; first < scratch.ends.size();) {
-    std::uint32_t last = first;
-    while (last < scratch.ends.size() && scratch.ends[last].body == scratch.ends[first].body)
-      ++last;
-    for (std::uint32_t e = first; e < last; ++e) {
-      IslandScratch::RowEnds& row = scratch.row_ends[scratch.ends[e].row];
-      row.side[row.count++] = {e, first, last};
-    }
-    entries += std::size_t{last - first} * (last - first);
-    first = last;
-  }
+  const auto row_of = [](const End& e) { return e.row; };
+  const std::size_t entries = find_item_ends(scratch.ends, n, row_of, scratch.row_ends);
   // Entry (e.row, f.row) of the body of ends e and f, f being its column's.
   const auto share = [&](const End& e, const End& f) {
     const Vec2& n_e = contacts[scratch.rows[e.row].contact].normal;
@@ -51,27 +40,22 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
   k.reserve(static_cast<Eigen::Index>(entries));
   for (std::uint32_t column = 0; column < n; ++column) {
     k.startVec(column);
-    const IslandScratch::RowEnds& row = scratch.row_ends[column];
+    const ItemEnds& row = scratch.row_ends[column];
     if (row.count == 0) continue;
     // The rows of the points on both of the column's bodies (its own, its contact's other point)
-    // take a share from each; a column of one body has an empty second side.
-    const IslandScratch::RowEnds::Side f = row.side[0];
-    const IslandScratch::RowEnds::Side g =
-        row.count == 2 ? row.side[1] : IslandScratch::RowEnds::Side{};
-    std::uint32_t e = f.first;
-    std::uint32_t o = g.first;
-    while (e < f.last || o < g.last) {
-      const std::uint32_t row_e = e < f.last ? scratch.ends[e].row : n;
-      const std::uint32_t row_o = o < g.last ? scratch.ends[o].row : n;
-      if (row_e < row_o) {
-        k.insertBack(row_e, column) = share(scratch.ends[e++], scratch.ends[f.own]);
-      } else if (row_o < row_e) {
-        k.insertBack(row_o, column) = share(scratch.ends[o++], scratch.ends[g.own]);
-      } else {
-        k.insertBack(row_e, column) = share(scratch.ends[e++], scratch.ends[f.own]) +
-                                      share(scratch.ends[o++], scratch.ends[g.own]);
-      }
-    }
+    // take a share from each; g is not read for a column of one body, whose second side is empty.
+    const End& f = scratch.ends[row.side[0].own];
+    const End& g = scratch.ends[row.side[1].own];
+    for_each_coupled(
+        scratch.ends, row, row_of, [&](std::uint32_t r, std::uint32_t on_f, std::uint32_t on_g) {
+          if (on_g == kNoEnd) {
+            k.insertBack(r, column) = share(scratch.ends[on_f], f);
+          } else if (on_f == kNoEnd) {
+            k.insertBack(r, column) = share(scratch.ends[on_g], g);
+          } else {
+            k.insertBack(r, column) = share(scratch.ends[on_f], f) + share(scratch.ends[on_g], g);
+          }
+        });
   }
   k.finalize();
 }
@@ -203,7 +187,7 @@ void release_large(IslandScratch& scratch) {
   // Moved-from temporaries take the room with them; `= {}` would keep a vector's capacity.
   scratch.rows = std::vector<IslandScratch::Row>();
   scratch.ends = std::vector<IslandScratch::End>();
-  scratch.row_ends = std::vector<IslandScratch::RowEnds>();
+  scratch.row_ends = std::vector<ItemEnds>();
   SparseK().swap(scratch.k_sparse);  // assigning an empty matrix would keep its entries' room
   scratch.residual = Eigen::VectorXd();
   scratch.initial = Eigen::VectorXd();

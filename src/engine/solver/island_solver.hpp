@@ -14,6 +14,7 @@
 #include <Eigen/SparseCore>
 
 #include "engine/solver/contact_islands.hpp"
+#include "engine/solver/coupled_items.hpp"
 #include "engine/solver/island_order.hpp"
 #include "engine/solver/normal_lcp.hpp"
 #include "engine/solver/velocity_passes.hpp"
@@ -39,14 +40,6 @@ struct IslandScratch {
     double sign;
     double arm;
   };
-  // A point's ends, by body: each its own place in `ends` and its body's ends there, [first, last).
-  struct RowEnds {
-    struct Side {
-      std::uint32_t own = 0, first = 0, last = 0;
-    };
-    Side side[2];
-    std::uint32_t count = 0;
-  };
   std::vector<Row> rows;  // the island's points
   // Of an island solved with a sparse K: its contacts in the order its points are listed in.
   std::vector<std::uint32_t> ordered_contacts;
@@ -54,8 +47,8 @@ struct IslandScratch {
   // 1/kg: effective-mass matrix of the island's points, dense for an island of at most
   // kDenseIslandPoints, else sparse (from its entries, body by body).
   Eigen::MatrixXd k_dense;
-  std::vector<End> ends;  // the points' ends, by body
-  std::vector<RowEnds> row_ends;
+  std::vector<End> ends;           // the points' ends, by body
+  std::vector<ItemEnds> row_ends;  // per point: its ends, by body
   SparseK k_sparse;
   Eigen::VectorXd residual;  // m/s: w₀, each point's normal velocity less its target
   Eigen::VectorXd initial;   // N·s: λ₀, each point's normal impulse so far
