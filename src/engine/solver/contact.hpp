@@ -53,13 +53,10 @@ struct ContactPointState {
   /// (DD:chaslesThm).
   double normal_arm_a = 0.0, normal_arm_b = 0.0;
   double tangent_arm_a = 0.0, tangent_arm_b = 0.0;
-  /// m/s: C_R times v_rel·n before the step when the point was touching and approaching faster
-  /// than the restitution threshold (it then bounces, apply_restitution driving v_rel·n up to
-  /// minus this), else 0.
-  double bounce_velocity = 0.0;
   /// m, overlap at detection (negative: still apart). A float, with the id in the room a double
   /// would leave: overlaps are within the contact margin or a few centimetres, where its 24 bits
-  /// resolve nanometres, and this saves 8 of a point's 96 bytes.
+  /// resolve nanometres, and a point takes 80 bytes rather than 88. (A point's bounce is kept
+  /// beside it: ContactSet::bounce_velocities.)
   float depth = 0.0F;
   FeatureId id;
   AnchorKind anchor_a = AnchorKind::kFixed;  ///< in the room left after the id

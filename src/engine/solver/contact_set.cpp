@@ -35,6 +35,7 @@ void ContactSet::clear() {
   size_ = 0;
   point_count_ = 0;
   block_count_ = 0;
+  keep_bounce_velocities(false);
 }
 
 ContactSlot ContactSet::take(std::uint8_t count) {
@@ -49,6 +50,7 @@ void ContactSet::grow() {
   room_for(contacts_, size_);
   room_for(points_, point_count_);
   room_for(blocks_, block_count_);
+  if (keeps_bounces_) keep_bounce_velocities(true);
   grown_ = true;
 }
 
@@ -58,6 +60,16 @@ void ContactSet::fit_room() {
   fit(contacts_, size_);
   fit(points_, point_count_);
   fit(blocks_, block_count_);
+}
+
+void ContactSet::keep_bounce_velocities(bool keep) {
+  keeps_bounces_ = keep;
+  if (!keep) {
+    bounces_.clear();
+    return;
+  }
+  reserve_for(bounces_, point_count_);
+  bounces_.resize(point_count_);
 }
 
 Contact& ContactSet::append(int count) {
@@ -83,6 +95,7 @@ Contact& ContactSet::place(const ContactSlot& slot) {
   c.block = slot.block;
   for (ContactPointState& p : points(c)) p = ContactPointState{};
   if (c.block != Contact::kNoBlock) blocks_[c.block] = NormalBlock{};
+  if (keeps_bounces_) std::ranges::fill(bounce_velocities(c), 0.0);
   return c;
 }
 

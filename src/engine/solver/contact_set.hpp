@@ -68,6 +68,22 @@ class ContactSet {
   const NormalBlock& block(const Contact& c) const { return blocks_[c.block]; }
   NormalBlock& block(const Contact& c) { return blocks_[c.block]; }
 
+  /// Per point of `c` [m/s]: C_R times v_rel·n before the step when the point was touching and
+  /// approaching faster than the restitution threshold (it then bounces, apply_restitution
+  /// driving v_rel·n up to minus this), else 0. Kept beside the points rather than in them, and
+  /// only while keeps_bounce_velocities(): most scenes have no shape that bounces, and every pass
+  /// over the points would carry the field.
+  std::span<double> bounce_velocities(const Contact& c) {
+    return {bounces_.data() + c.first_point, static_cast<std::size_t>(c.count())};
+  }
+  std::span<const double> bounce_velocities(const Contact& c) const {
+    return {bounces_.data() + c.first_point, static_cast<std::size_t>(c.count())};
+  }
+  /// Gives every point a bounce velocity, each to be set by the caller, or, with `keep` false,
+  /// none.
+  void keep_bounce_velocities(bool keep);
+  bool keeps_bounce_velocities() const { return keeps_bounces_; }
+
   /// Removes the contacts for which `drop(contact)` is true, keeping the others' order.
   template <typename Predicate>
   void erase_if(Predicate drop) {
@@ -78,7 +94,10 @@ class ContactSet {
       if (drop(c)) continue;
       Contact moved = c;
       moved.first_point = static_cast<std::uint32_t>(kept_points);
-      for (int k = 0; k < c.count(); ++k) points_[kept_points++] = points_[c.first_point + k];
+      for (int k = 0; k < c.count(); ++k) {
+        if (keeps_bounces_) bounces_[kept_points] = bounces_[c.first_point + k];
+        points_[kept_points++] = points_[c.first_point + k];
+      }
       if (c.block != Contact::kNoBlock) {
         moved.block = static_cast<std::uint32_t>(kept_blocks);
         blocks_[kept_blocks++] = blocks_[c.block];
@@ -96,7 +115,7 @@ class ContactSet {
   /// asked for at every contact appended, and the arrays seldom grow.
   void make_room() {
     if (contacts_.size() < size_ || points_.size() < point_count_ ||
-        blocks_.size() < block_count_) {
+        blocks_.size() < block_count_ || (keeps_bounces_ && bounces_.size() < point_count_)) {
       grow();
     }
   }
@@ -106,10 +125,12 @@ class ContactSet {
   std::vector<Contact> contacts_;
   std::vector<ContactPointState> points_;
   std::vector<NormalBlock> blocks_;
+  std::vector<double> bounces_;  // per point, while keeps_bounces_
   std::size_t size_ = 0;
   std::size_t point_count_ = 0;
   std::size_t block_count_ = 0;
   bool grown_ = false;  // since the last fit_room
+  bool keeps_bounces_ = false;
 };
 
 }  // namespace gp

@@ -272,27 +272,26 @@ void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPrepara
   const Contact& c = contacts[i];
   const Vec2 tangent = contact_tangent(c.normal);
   const std::span<ContactPointState> points = contacts.points(c);
-  const bool bounces = in.shapes.any_bounce();
   for (ContactPointState& p : points) {
     const Vec2 arm_a = gp::arm_a(c, p);
     const Vec2 arm_b = gp::arm_b(c, p);
     p.normal_mass = effective_mass(inertia, c, arm_a, arm_b, c.normal);
     p.tangent_mass = effective_mass(inertia, c, arm_a, arm_b, tangent);
     p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in));
-    // Without a shape that bounces, no point does, and its approach need not be measured.
-    if (!bounces) {
-      p.bounce_velocity = 0.0;
-      continue;
-    }
-    const double approach = contact_normal_velocity(in.before, c, p);
+  }
+  if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
+  // Without a shape that bounces, no point does, and its approach need not be measured.
+  if (!contacts.keeps_bounce_velocities()) return;
+  const std::span<double> bounces = contacts.bounce_velocities(c);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double approach = contact_normal_velocity(in.before, c, points[k]);
     // A speculative point (still apart) bounces too if the solver ends up pushing on it:
     // apply_restitution acts only where the normal impulse is positive. The shapes' restitution
     // is looked up only then: a resting pile's points never approach that fast.
-    p.bounce_velocity = approach < -in.settings.restitution_threshold
-                            ? contact_restitution(in.shapes, c) * approach
-                            : 0.0;
+    bounces[k] = approach < -in.settings.restitution_threshold
+                     ? contact_restitution(in.shapes, c) * approach
+                     : 0.0;
   }
-  if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
 }
 
 void warm_start_contact(const ContactSet& contacts, std::uint32_t i, const BodyInertia& inertia,
@@ -311,6 +310,7 @@ void warm_start_contact(const ContactSet& contacts, std::uint32_t i, const BodyI
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
   const ContactPreparation in{shapes, inertia, before, h, settings};
+  contacts.keep_bounce_velocities(shapes.any_bounce());
   for (std::uint32_t i = 0; i < contacts.size(); ++i) prepare_contact(contacts, i, in);
 }
 
@@ -320,6 +320,7 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
 
 void prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
                             const ContactPreparation& preparation, MotionState& s) {
+  contacts.keep_bounce_velocities(preparation.shapes.any_bounce());
   batches.run([&](std::uint32_t i) {
     prepare_contact(contacts, i, preparation);
     warm_start_contact(contacts, i, preparation.inertia, s);
@@ -369,17 +370,19 @@ int solve_velocities_in(const Pass& pass, ContactSet& contacts, const BodyInerti
 template <typename Order>
 void apply_restitution_in(const Order& order, ContactSet& contacts, const BodyInertia& inertia,
                           MotionState& s) {
+  if (!contacts.keeps_bounce_velocities()) return;
   order.run([&](std::uint32_t i) {
     const Contact& c = contacts[i];
-    const std::span<ContactPointState> points = contacts.points(c);
-    if (std::all_of(points.begin(), points.end(),
-                    [](const ContactPointState& p) { return p.bounce_velocity == 0.0; })) {
+    const std::span<const double> bounces = contacts.bounce_velocities(c);
+    if (std::all_of(bounces.begin(), bounces.end(), [](double b) { return b == 0.0; })) {
       return 0.0;
     }
     PairMotion m(c, inertia, s);
-    for (ContactPointState& p : points) {
-      if (p.bounce_velocity == 0.0 || p.normal_impulse == 0.0) continue;
-      const double change = -p.normal_mass * (m.normal_velocity(c, p) + p.bounce_velocity);
+    const std::span<ContactPointState> points = contacts.points(c);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      ContactPointState& p = points[k];
+      if (bounces[k] == 0.0 || p.normal_impulse == 0.0) continue;
+      const double change = -p.normal_mass * (m.normal_velocity(c, p) + bounces[k]);
       const double total = std::max(p.normal_impulse + change, 0.0);
       m.push_normal(c, p, total - p.normal_impulse);
       p.normal_impulse = total;
