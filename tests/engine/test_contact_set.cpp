@@ -4,6 +4,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <span>
 
 #include "engine/capacity.hpp"
 #include "engine/solver/contact_set.hpp"
@@ -71,6 +72,26 @@ TEST_CASE("erase_if keeps the others in order with their points", "[contact_set]
   CHECK(set[1].first_point == 2);
   CHECK(set.points(set[1])[0].normal_impulse == 3.0);
   CHECK(set.block(set[1]).k11 == 0.0);
+}
+
+TEST_CASE("bounce velocities stay with their points and go with a clear", "[contact_set]") {
+  gp::ContactSet set;
+  for (int count : {2, 1, 2}) set.append(count);
+  set.keep_bounce_velocities(true);
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    std::span<double> bounces = set.bounce_velocities(set[i]);
+    for (std::size_t k = 0; k < bounces.size(); ++k) bounces[k] = -10.0 * double(i) - double(k);
+    set[i].body_a = static_cast<gp::BodyId>(i);
+  }
+  set.erase_if([](const gp::Contact& c) { return c.body_a == 1; });
+  REQUIRE(set.size() == 2);
+  CHECK(set.bounce_velocities(set[1])[0] == -20.0);
+  CHECK(set.bounce_velocities(set[1])[1] == -21.0);
+  // A contact placed after them starts without a bounce.
+  const gp::Contact& added = set.append(1);
+  CHECK(set.bounce_velocities(added)[0] == 0.0);
+  set.clear();
+  CHECK_FALSE(set.keeps_bounce_velocities());
 }
 
 TEST_CASE("a pile's contacts appended from none take a few allocations and keep an eighth more",
