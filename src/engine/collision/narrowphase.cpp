@@ -239,8 +239,12 @@ ContactManifold collide(const GeometryView& a, const GeometryView& b, double mar
 }
 
 ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin) {
+  // The two pairs of a pile, boxes and discs, straight to their collision without a view.
   if (a.kind() == ShapeKind::kPolygon && b.kind() == ShapeKind::kPolygon) {
     return collide_polygons(a.polygon(), b.polygon(), margin);
+  }
+  if (a.kind() == ShapeKind::kCircle && b.kind() == ShapeKind::kCircle) {
+    return collide_circles(a.circle(), b.circle(), margin);
   }
   return collide(a.view(), b.view(), margin);
 }
