@@ -21,7 +21,7 @@ inline constexpr double kContactTolerance = 5e-4;
 /// Does not allocate.
 ContactManifold collide(const GeometryView& a, const GeometryView& b, double margin);
 /// The same for two shapes as WorldShapes packs them: two polygons (two boxes: a box pile's every
-/// pair) are collided without being viewed first.
+/// pair) and two discs (a rain's) are collided without being viewed first.
 ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin);
 /// The same for placed shapes, whose boxes it does not need.
 inline ContactManifold collide(const WorldShapeView& a, const WorldShapeView& b, double margin) {
