@@ -32,6 +32,28 @@ using Four = __m256d;
   high = _mm256_unpackhi_pd(xs, ys);
 }
 
+/// Four fields of four records: field[k] holds field k of each record, a lane each.
+struct FourFields {
+  __m256d field[4];
+};
+
+/// Four rows of four doubles, a record's fields each, into their columns.
+[[gnu::target("avx2")]] inline FourFields transpose(__m256d r0, __m256d r1, __m256d r2,
+                                                    __m256d r3) {
+  // (r0[0], r1[0], r0[2], r1[2]), (r0[1], r1[1], r0[3], r1[3]), and the same of r2 and r3; then
+  // their low halves side by side, and their high halves.
+  const __m256d even01 = _mm256_unpacklo_pd(r0, r1);
+  const __m256d odd01 = _mm256_unpackhi_pd(r0, r1);
+  const __m256d even23 = _mm256_unpacklo_pd(r2, r3);
+  const __m256d odd23 = _mm256_unpackhi_pd(r2, r3);
+  constexpr int kLowHalves = 0x20;
+  constexpr int kHighHalves = 0x31;
+  return {{_mm256_permute2f128_pd(even01, even23, kLowHalves),
+           _mm256_permute2f128_pd(odd01, odd23, kLowHalves),
+           _mm256_permute2f128_pd(even01, even23, kHighHalves),
+           _mm256_permute2f128_pd(odd01, odd23, kHighHalves)}};
+}
+
 /// All ones in each of the first n of four lanes.
 [[gnu::target("avx2")]] inline __m256i first_lanes(std::size_t n) {
   return _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(n)),

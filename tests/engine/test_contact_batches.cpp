@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <tbb/task_arena.h>
@@ -63,10 +64,15 @@ std::vector<std::uint32_t> visits(gp::ContactBatches& batches, const Graph& g,
                                   Visit visit = Visit::kInOrder) {
   batches.build(g.contacts, last_kept, g.inertia, g.positions, splitting);
   std::vector<std::uint32_t> order;
+  const auto visit_one = [&](std::uint32_t i) {
+    order.push_back(i);
+    return 0.0;
+  };
   tbb::task_arena(1).execute([&] {
     batches.run(
-        [&](std::uint32_t i) {
-          order.push_back(i);
+        visit_one,
+        [&](std::span<const std::uint32_t> independent) {
+          for (const std::uint32_t i : independent) visit_one(i);
           return 0.0;
         },
         visit);
@@ -109,6 +115,44 @@ TEST_CASE("Interleaved, each island's contacts are visited in two halves, taken 
   // row does.
   CHECK(visits(chain(6), {0, kColouredAbove}, Visit::kInterleaved) ==
         std::vector<std::uint32_t>{0, 3, 1, 4, 2, 5});
+}
+
+// The runs of contacts a pass by levels hands over at once, each as a list, and the contacts it
+// visits one at a time, each a list of one, in the order one thread visits them.
+std::vector<std::vector<std::uint32_t>> level_runs(const Graph& g) {
+  gp::ContactBatches batches;
+  batches.build(g.contacts, {}, g.inertia, g.positions, {0, kColouredAbove});
+  std::vector<std::vector<std::uint32_t>> runs;
+  tbb::task_arena(1).execute([&] {
+    batches.run(
+        [&](std::uint32_t i) {
+          runs.push_back({i});
+          return 0.0;
+        },
+        [&](std::span<const std::uint32_t> independent) {
+          runs.emplace_back(independent.begin(), independent.end());
+          return 0.0;
+        },
+        Visit::kLevels);
+  });
+  return runs;
+}
+
+TEST_CASE("By levels, an island of one-point contacts is visited level after level") {
+  // Three bodies in a row on the ground, contacts 0-2 theirs on the ground, 3 between bodies 1
+  // and 2, 4 between 2 and 3: contacts 0, 1 and 2 share no body (level 1), 3 follows 0 and 1, and
+  // 4 follows 3 (through body 2) and 2.
+  const Graph row(4, {{1, 0}, {2, 0}, {3, 0}, {1, 2}, {2, 3}});
+  using Runs = std::vector<std::vector<std::uint32_t>>;
+  CHECK(level_runs(row) == Runs{{0, 1, 2}, {3}, {4}});
+  // A chain: every contact follows the one before, a level each.
+  CHECK(level_runs(chain(4)) == Runs{{0}, {1}, {2}, {3}});
+  // A two-point contact in the island: visited in interleaved halves instead, one at a time.
+  Graph mixed(4, {{1, 0}, {2, 0}, {3, 0}, {1, 2}});
+  gp::Contact& two = mixed.contacts.append(2);
+  two.body_a = two.shape_a = 2;
+  two.body_b = two.shape_b = 3;
+  CHECK(level_runs(mixed) == Runs{{0}, {3}, {1}, {4}, {2}});
 }
 
 TEST_CASE("A large island is visited colour after colour, no colour sharing a movable body") {

@@ -52,7 +52,11 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   }
   part(contacts, inertia, positions, splitting.parted_above);
   first_colour_stage_ = stage_end_.size();
-  coloured_begin_ = coloured_end_ = 0;
+  level_order_.clear();
+  level_end_.clear();
+  levels_of_.assign(task_end_.size(), {});
+  if (!task_end_.empty()) body_level_.assign(bodies, 0);
+  for (std::size_t t = 0; t < task_end_.size(); ++t) level_task(contacts, inertia, t);
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
 }
 
@@ -244,6 +248,55 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
   }
 }
 
+void ContactBatches::level_task(const ContactSet& contacts, const BodyInertia& inertia,
+                                std::size_t t) {
+  const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
+  const std::uint32_t end = task_end_[t];
+  for (std::uint32_t e = begin; e < end; ++e) {
+    if (contacts[order_[e]].count() != 1) return;
+  }
+  // A contact's level, from 1, as its bodies' last contacts left them; its bodies then take it.
+  const auto level_of = [&](std::uint32_t e) {
+    const Contact& c = contacts[order_[e]];
+    const bool a = movable(inertia, c.body_a);
+    const bool b = movable(inertia, c.body_b);
+    const std::uint32_t level =
+        1 + std::max(a ? body_level_[c.body_a] : 0, b ? body_level_[c.body_b] : 0);
+    if (a) body_level_[c.body_a] = level;
+    if (b) body_level_[c.body_b] = level;
+    return level;
+  };
+  const auto forget = [&] {
+    for (std::uint32_t e = begin; e < end; ++e) {
+      const Contact& c = contacts[order_[e]];
+      body_level_[c.body_a] = body_level_[c.body_b] = 0;
+    }
+  };
+  // The levels are found twice, to count each level's contacts and then to place them: a second
+  // pass over the task costs less than the room for each contact's level.
+  const auto first = static_cast<std::uint32_t>(level_end_.size());
+  for (std::uint32_t e = begin; e < end; ++e) {
+    const std::uint32_t level = level_of(e);
+    if (first + level > level_end_.size()) append(level_end_, 0);
+    ++level_end_[first + level - 1];
+  }
+  forget();
+  // Each level's count into where it starts, and, as its contacts are placed, where it ends.
+  auto start = static_cast<std::uint32_t>(level_order_.size());
+  for (std::size_t l = first; l < level_end_.size(); ++l) {
+    const std::uint32_t count = level_end_[l];
+    level_end_[l] = start;
+    start += count;
+  }
+  reserve_for(level_order_, start);
+  level_order_.resize(start);
+  for (std::uint32_t e = begin; e < end; ++e) {
+    level_order_[level_end_[first + level_of(e) - 1]++] = order_[e];
+  }
+  forget();
+  levels_of_[t] = {first, static_cast<std::uint32_t>(level_end_.size())};
+}
+
 void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inertia,
                             std::size_t coloured_above) {
   const std::size_t bodies = inertia.inverse_mass.size();
@@ -256,7 +309,7 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
   colours_.assign(bodies, 0);
   bucket_.resize(contacts.size());
   // Contacts go to bucket 2k (colour k, one point) or 2k + 1 (colour k, two points): a colour's
-  // one-point contacts side by side, for SinglePointLanes. The contacts that found every colour
+  // one-point contacts side by side, for solve_single_points. The contacts that found every colour
   // taken go to the last bucket.
   constexpr std::size_t kLastBucket = 2 * kColours;
   std::array<std::uint32_t, kLastBucket + 3> next{};  // counts, then starts
@@ -297,9 +350,7 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
     for (std::uint32_t e = begin; e < end; ++e) task_end_.push_back(e + 1);
     stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
   }
-  coloured_begin_ = base;
-  coloured_end_ = next[kLastBucket];
-  if (next[kLastBucket + 1] > coloured_end_) task_end_.push_back(next[kLastBucket + 1]);
+  if (next[kLastBucket + 1] > next[kLastBucket]) task_end_.push_back(next[kLastBucket + 1]);
   stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
 }
 

@@ -64,11 +64,12 @@ class ContactBatches {
   /// between two parts joins the smallest group of parts holding both. Second stage: per cut
   /// island, one task of its contacts between parts, group by group from the smallest up. Last
   /// stages: each colour of the coloured islands, one task per contact. No two tasks of a stage
-  /// share a body that the solver moves. Reuses its arrays' room. `last_kept` are the points of
-  /// the contacts of the last pass, as keep_impulses kept them: when `contacts` are those same
+  /// share a body that the solver moves. The tasks of the first two stages whose contacts all have
+  /// one point are also put in levels (Visit). Reuses its arrays' room. `last_kept` are the points
+  /// of the contacts of the last pass, as keep_impulses kept them: when `contacts` are those same
   /// contacts (the same pairs of shapes, as many points each) as the last build's, the bodies as
-  /// movable and the splitting the same (a pile at rest), the islands, parts and colours of the
-  /// last build are kept.
+  /// movable and the splitting the same (a pile at rest), the islands, parts, levels and colours
+  /// of the last build are kept.
   void build(const ContactSet& contacts, std::span<const WarmStart> last_kept,
              const BodyInertia& inertia, std::span<const Vec2> positions,
              const IslandSplitting& splitting);
@@ -76,41 +77,42 @@ class ContactBatches {
   /// The islands of the contacts build was given.
   const ContactIslands& islands() const { return islands_; }
 
-  /// The contacts of the colours, colour after colour, each colour's one-point contacts first
-  /// (but those that found every colour taken, solved one after the other): what run hands to
-  /// solve_colour, at its entries into this span.
-  std::span<const std::uint32_t> coloured() const {
-    return {order_.data() + coloured_begin_, order_.data() + coloured_end_};
-  }
-
-  /// How a task's contacts are visited: in order, or in two interleaved halves (the first, the
-  /// first past the middle, the second, ...). Contacts next to each other in the contacts' order
-  /// often share a body (a shape's contacts follow one another), so that each solve that moves
-  /// bodies waits on the one before; from halves apart they seldom do, and the processor overlaps
-  /// two solves. Passes that only read bodies lose by it the one stream of memory they walk.
-  enum class Visit { kInOrder, kInterleaved };
+  /// How a task's contacts are visited: in order; in two interleaved halves (the first, the first
+  /// past the middle, the second, ...); or by levels. Contacts next to each other in the
+  /// contacts' order often share a body (a shape's contacts follow one another), so that each
+  /// solve that moves bodies waits on the one before; from halves apart they seldom do, and the
+  /// processor overlaps two solves. Passes that only read bodies lose by it the one stream of
+  /// memory they walk. By levels, a task of one-point contacts is taken level by level, and the
+  /// others in halves. A contact's level is one more than the highest level of the task's
+  /// contacts before it that share a movable body with it: a level's contacts share none, and
+  /// each body meets its contacts in the contacts' order, so that solved level by level they give
+  /// the same result to the bit as in order, with each level's contacts free to be solved at once.
+  enum class Visit { kInOrder, kInterleaved, kLevels };
 
   /// The largest value `solve(contact index)` returns over the contacts: stage after stage, the
-  /// tasks of a stage on the threads the current task arena allows, a task's contacts as `visit`
-  /// says.
+  /// tasks of a stage on the threads the current task arena allows, a task's contacts in order.
   template <typename Solve>
-  double run(const Solve& solve, Visit visit = Visit::kInOrder) const {
+  double run(const Solve& solve) const {
     return run(
         solve,
-        [&](std::size_t, std::span<const std::uint32_t> colour) {
+        [&](std::span<const std::uint32_t> contacts) {
           double largest = 0.0;
-          for (const std::uint32_t i : colour) largest = std::max(largest, solve(i));
+          for (const std::uint32_t i : contacts) largest = std::max(largest, solve(i));
           return largest;
         },
-        visit);
+        Visit::kInOrder);
   }
 
-  /// The same, but the contacts of a colour go to `solve_colour(entry, contact indices)` a block
-  /// at a time, `entry` being where the block starts in coloured(), which returns the largest
-  /// value over them: they share no movable body, so they may be solved in any order, or several
-  /// at once, with the same result.
-  template <typename Solve, typename SolveColour>
-  double run(const Solve& solve, const SolveColour& solve_colour, Visit visit) const {
+  /// The same, a task's contacts visited as `visit` says, but contacts that share no movable body
+  /// (a colour's, a block at a time, and a level's) go to `solve_independent(contact indices)`,
+  /// which returns the largest value over them: they may be solved in any order, or several at
+  /// once, with the same result.
+  template <typename Solve, typename SolveIndependent>
+  double run(const Solve& solve, const SolveIndependent& solve_independent, Visit visit) const {
+    const auto entries = [](const std::vector<std::uint32_t>& of, std::uint32_t begin,
+                            std::uint32_t end) {
+      return std::span<const std::uint32_t>(of.data() + begin, end - begin);
+    };
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
       // In order, the tasks of a block follow one another in order_: one loop over them all.
       if (visit == Visit::kInOrder) {
@@ -119,6 +121,14 @@ class ContactBatches {
         return largest;
       }
       for (std::size_t t = first; t < last; ++t) {
+        if (visit == Visit::kLevels && levelled(t)) {
+          for (std::uint32_t l = levels_of_[t].first; l < levels_of_[t].last; ++l) {
+            const std::uint32_t begin = l == 0 ? 0 : level_end_[l - 1];
+            largest =
+                std::max(largest, solve_independent(entries(level_order_, begin, level_end_[l])));
+          }
+          continue;
+        }
         const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
         const std::uint32_t end = task_end_[t];
         const std::uint32_t middle = begin + (end - begin + 1) / 2;
@@ -132,10 +142,7 @@ class ContactBatches {
     // A colour's tasks are one contact each, one after the other in order_.
     const auto colour_tasks = [&](std::size_t first, std::size_t last, double largest) {
       const std::uint32_t begin = first == 0 ? 0 : task_end_[first - 1];
-      return std::max(largest,
-                      solve_colour(begin - coloured_begin_,
-                                   std::span<const std::uint32_t>(order_.data() + begin,
-                                                                  task_end_[last - 1] - begin)));
+      return std::max(largest, solve_independent(entries(order_, begin, task_end_[last - 1])));
     };
     const bool alone = one_thread();
     double largest = 0.0;
@@ -176,6 +183,9 @@ class ContactBatches {
   void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
             std::size_t parted_above);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
+  /// Levels task `t` of order_ into level_order_ if its contacts all have one point (see Visit).
+  void level_task(const ContactSet& contacts, const BodyInertia& inertia, std::size_t t);
+  bool levelled(std::size_t t) const { return levels_of_[t].last > levels_of_[t].first; }
   void halve_bodies(std::span<const Vec2> positions, std::uint32_t first, std::uint32_t last,
                     int depth, std::uint32_t code);
 
@@ -196,8 +206,14 @@ class ContactBatches {
   std::vector<std::uint32_t> group_start_;  // per group: its first entry in order_
   std::vector<std::uint64_t> colours_;      // per body: the colours its contacts took, as bits
   std::vector<std::uint8_t> bucket_;        // per contact of a large island: its colour's bucket
-  std::uint32_t coloured_begin_ = 0;        // the colours' entries in order_ (not the last one's)
-  std::uint32_t coloured_end_ = 0;
+  // Per task before the colours: its levels in level_end_, [first, last); none: not levelled.
+  struct Levels {
+    std::uint32_t first = 0, last = 0;
+  };
+  std::vector<Levels> levels_of_;
+  std::vector<std::uint32_t> level_order_;  // the levelled tasks' contacts, level after level
+  std::vector<std::uint32_t> level_end_;    // per level: one past its last entry in level_order_
+  std::vector<std::uint32_t> body_level_;   // per body: while levelling, its last contact's level
 };
 
 }  // namespace gp

@@ -39,8 +39,7 @@ void ContactSolver::solve_small_islands(StepContext& c) {
 
 void ContactSolver::solve_velocities(StepContext& c) {
   gp::solve_velocities(batches_, c.contacts, c.inertia,
-                       {c.settings.velocity_iterations, c.settings.velocity_tolerance}, c.state,
-                       single_points_);
+                       {c.settings.velocity_iterations, c.settings.velocity_tolerance}, c.state);
 }
 
 void ContactSolver::apply_restitution(StepContext& c) {

@@ -9,7 +9,6 @@
 #include "engine/solver/contact_batches.hpp"
 #include "engine/solver/island_solver.hpp"
 #include "engine/solver/position_passes.hpp"
-#include "engine/solver/single_point_lanes.hpp"
 #include "engine/solver/speculative.hpp"
 
 namespace gp {
@@ -37,8 +36,7 @@ class ContactSolver {
   void correct_positions(StepContext& c);
 
  private:
-  ContactBatches batches_;          ///< of the sub-step's contacts, found in prepare
-  SinglePointLanes single_points_;  ///< the colours' one-point contacts, packed for the passes
+  ContactBatches batches_;  ///< of the sub-step's contacts, found in prepare
   DirectSolveScratch islands_;
   SpeculativeScratch speculative_;
   PositionCorrection positions_;

@@ -260,7 +260,7 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
         deep = 0.0 !=
                order.run(
                    solve,
-                   [&](std::size_t, std::span<const std::uint32_t> colour) {
+                   [&](std::span<const std::uint32_t> colour) {
                      return correct_colour(contacts, colour, solve, {inertia, detected, slop}, s);
                    },
                    ContactBatches::Visit::kInOrder);

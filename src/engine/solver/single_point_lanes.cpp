@@ -13,52 +13,44 @@ namespace gp {
 
 namespace {
 
-// The fields packed, an array each.
-enum Field : std::size_t {
-  kNormalX,
-  kNormalY,
-  kFriction,
-  kNormalImpulse,
-  kTangentImpulse,
-  kTarget,
-  kNormalMass,
-  kTangentMass,
-  kNormalArmA,
-  kNormalArmB,
-  kTangentArmA,
-  kTangentArmB,
-  kInverseMassA,
-  kInverseMassB,
-  kInverseMomentA,
-  kInverseMomentB,
-  kFields
-};
-
-// The packed arrays, as the kernel reads and writes them.
-struct Columns {
-  double* fields;
-  std::size_t stride;
-  const BodyId* body_a;
-  const BodyId* body_b;
-
-  double* at(Field f, std::size_t entry) const { return fields + f * stride + entry; }
-};
-
 #if GP_LANES_AVX2
 
-// Field f of the n ≤ 4 entries from `entry` on (the lanes `lanes`); 0 in the lanes past them,
-// whose memory is not touched: it may be another thread's, or past the end.
-[[gnu::target("avx2")]] inline Four load(const Columns& c, Field f, std::size_t entry,
-                                         std::size_t n, __m256i lanes) {
-  return n == 4 ? _mm256_loadu_pd(c.at(f, entry)) : _mm256_maskload_pd(c.at(f, entry), lanes);
+// The kernel loads four doubles at a time from a point's first nine fields and from a contact's
+// normal on: they must lie one after the other.
+constexpr bool follow_one_another(std::size_t first, std::size_t k, std::size_t field) {
+  return field == first + k * sizeof(double);
 }
-[[gnu::target("avx2")]] inline void store(const Columns& c, Field f, std::size_t entry,
-                                          std::size_t n, __m256i lanes, Four v) {
-  if (n == 4) {
-    _mm256_storeu_pd(c.at(f, entry), v);
-  } else {
-    _mm256_maskstore_pd(c.at(f, entry), lanes, v);
-  }
+static_assert(follow_one_another(offsetof(ContactPointState, normal_impulse), 1,
+                                 offsetof(ContactPointState, tangent_impulse)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 2,
+                                 offsetof(ContactPointState, target_normal_velocity)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 3,
+                                 offsetof(ContactPointState, normal_mass)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 4,
+                                 offsetof(ContactPointState, tangent_mass)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 5,
+                                 offsetof(ContactPointState, normal_arm_a)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 6,
+                                 offsetof(ContactPointState, normal_arm_b)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 7,
+                                 offsetof(ContactPointState, tangent_arm_a)) &&
+              follow_one_another(offsetof(ContactPointState, normal_impulse), 8,
+                                 offsetof(ContactPointState, tangent_arm_b)));
+// The normal, the friction, and 8 bytes more of the contact, which the kernel loads and drops.
+static_assert(follow_one_another(offsetof(Contact, normal), 2, offsetof(Contact, friction)) &&
+              offsetof(Contact, friction) + 2 * sizeof(double) <= sizeof(Contact));
+
+// The points and bodies of four contacts, a lane each.
+struct FourContacts {
+  std::array<ContactPointState*, 4> point;
+  std::array<BodyId, 4> a, b;
+};
+
+// Doubles k to k + 3 from `first` of each of four records, a field each.
+[[gnu::target("avx2")]] inline FourFields columns(const std::array<const double*, 4>& first,
+                                                  std::size_t k) {
+  return transpose(_mm256_loadu_pd(first[0] + k), _mm256_loadu_pd(first[1] + k),
+                   _mm256_loadu_pd(first[2] + k), _mm256_loadu_pd(first[3] + k));
 }
 
 // One body of each of four contacts: its velocity and inverse inertias.
@@ -120,18 +112,6 @@ struct FourDirections {
   take(m.b, d.x, d.y, d.arm_b, _mm256_xor_pd(j, _mm256_set1_pd(-0.0)), lanes);
 }
 
-// The fields of the n ≤ 4 entries from `entry` on, in `lanes`.
-struct FourEntries {
-  const Columns& columns;
-  std::size_t entry;
-  std::size_t n;
-  __m256i lanes;
-
-  [[gnu::target("avx2")]] Four operator()(Field f) const {
-    return load(columns, f, entry, n, lanes);
-  }
-};
-
 // The lanes, as bits, where `body` is movable: its inverse mass and moment, both at least 0, sum
 // to more than 0.
 [[gnu::target("avx2")]] inline int movable_lanes(const FourBodies& body) {
@@ -160,32 +140,44 @@ struct FourEntries {
   }
 }
 
-// solve_contact_once over the n ≤ 4 packed one-point contacts from `entry` on, lane by lane:
-// friction where it is above 0, then the normal constraint, and nothing where the contact is
-// idle. The lanes past n take the first's bodies, to read only, and change nothing.
-[[gnu::target("avx2")]] double solve_four(const Columns& c, std::size_t entry, std::size_t n,
-                                          MotionState& s) {
+// solve_contact_once over the n ≤ 4 one-point contacts `ids` of `set`, lane by lane: friction
+// where it is above 0, then the normal constraint, and nothing where the contact is idle. The
+// lanes past n take the first contact, to read only, and change nothing.
+[[gnu::target("avx2")]] double solve_four(ContactSet& set, const std::uint32_t* ids, std::size_t n,
+                                          const BodyInertia& inertia, MotionState& s) {
   const __m256i lanes = first_lanes(n);
-  const FourEntries field{c, entry, n, lanes};
-  std::array<BodyId, 4> a, b;
+  FourContacts four;
+  std::array<const double*, 4> point_fields, contact_fields;
   for (std::size_t l = 0; l < 4; ++l) {
-    a[l] = c.body_a[entry + (l < n ? l : 0)];
-    b[l] = c.body_b[entry + (l < n ? l : 0)];
+    const Contact& c = set[ids[l < n ? l : 0]];
+    ContactPointState& p = set.points(c)[0];
+    four.point[l] = &p;
+    four.a[l] = c.body_a;
+    four.b[l] = c.body_b;
+    point_fields[l] = &p.normal_impulse;
+    contact_fields[l] = c.normal.data();
   }
-  const Four normal_impulse = field(kNormalImpulse);
-  const Four tangent_impulse = field(kTangentImpulse);
-  const Four target = field(kTarget);
-  const Four normal_mass = field(kNormalMass);
-  const Four tangent_mass = field(kTangentMass);
-  const Four nx = field(kNormalX);
-  const Four ny = field(kNormalY);
-  const FourDirections normal{nx, ny, field(kNormalArmA), field(kNormalArmB)};
+  const FourFields impulses_to_masses = columns(point_fields, 0);
+  const Four normal_impulse = impulses_to_masses.field[0];
+  const Four tangent_impulse = impulses_to_masses.field[1];
+  const Four target = impulses_to_masses.field[2];
+  const Four normal_mass = impulses_to_masses.field[3];
+  const FourFields mass_and_arms = columns(point_fields, 4);
+  const Four tangent_mass = mass_and_arms.field[0];
+  const Four tangent_arm_b =
+      _mm256_set_pd(point_fields[3][8], point_fields[2][8], point_fields[1][8], point_fields[0][8]);
+  const FourFields normal_and_friction = columns(contact_fields, 0);
+  const Four nx = normal_and_friction.field[0];
+  const Four ny = normal_and_friction.field[1];
+  const Four friction = normal_and_friction.field[2];
+  const FourDirections normal{nx, ny, mass_and_arms.field[1], mass_and_arms.field[2]};
   // contact_tangent: (−n_y, n_x).
-  const FourDirections tangent{_mm256_xor_pd(ny, _mm256_set1_pd(-0.0)), nx, field(kTangentArmA),
-                               field(kTangentArmB)};
-  const Four friction = field(kFriction);
-  FourPairs m{gather_bodies(a, field(kInverseMassA), field(kInverseMomentA), s),
-              gather_bodies(b, field(kInverseMassB), field(kInverseMomentB), s)};
+  const FourDirections tangent{_mm256_xor_pd(ny, _mm256_set1_pd(-0.0)), nx, mass_and_arms.field[3],
+                               tangent_arm_b};
+  FourPairs m{gather_bodies(four.a, gather(inertia.inverse_mass.data(), four.a),
+                            gather(inertia.inverse_moment.data(), four.a), s),
+              gather_bodies(four.b, gather(inertia.inverse_mass.data(), four.b),
+                            gather(inertia.inverse_moment.data(), four.b), s)};
 
   const Four zero = _mm256_setzero_pd();
   // Not idle (solve_contact's idle): an impulse already, or a point closing faster than its target.
@@ -210,8 +202,13 @@ struct FourEntries {
   const Four normal_step = _mm256_sub_pd(normal_total, normal_impulse);
   push(m, normal, normal_step, busy);
 
-  store(c, kNormalImpulse, entry, n, lanes, where(busy, normal_impulse, normal_total));
-  store(c, kTangentImpulse, entry, n, lanes, where(rubs, tangent_impulse, tangent_total));
+  alignas(32) std::array<double, 4> normal_out, tangent_out;
+  _mm256_store_pd(normal_out.data(), where(busy, normal_impulse, normal_total));
+  _mm256_store_pd(tangent_out.data(), where(rubs, tangent_impulse, tangent_total));
+  for (std::size_t l = 0; l < n; ++l) {
+    four.point[l]->normal_impulse = normal_out[l];
+    four.point[l]->tangent_impulse = tangent_out[l];
+  }
   const Four largest_step =
       max_of(max_of(zero, _mm256_and_pd(magnitude(tangent_step), rubs)), magnitude(normal_step));
   alignas(32) std::array<double, 4> change;
@@ -222,8 +219,8 @@ struct FourEntries {
   // Only movable bodies are written, as PairMotion::store does: a static body may be in
   // contacts solved on other threads at the same time.
   const int first_n = (1 << n) - 1;
-  store_bodies(m.a, a, movable_lanes(m.a) & first_n, s);
-  store_bodies(m.b, b, movable_lanes(m.b) & first_n, s);
+  store_bodies(m.a, four.a, movable_lanes(m.a) & first_n, s);
+  store_bodies(m.b, four.b, movable_lanes(m.b) & first_n, s);
   double largest = 0.0;
   for (std::size_t l = 0; l < n; ++l) largest = std::max(largest, change[l]);
   return largest;
@@ -233,76 +230,26 @@ struct FourEntries {
 
 }  // namespace
 
-void SinglePointLanes::pack(std::span<const std::uint32_t> entries, const ContactSet& set,
-                            const BodyInertia& inertia) {
-  const std::size_t count = entries.size();
-  fields_.resize(kFields * count);
-  contact_.assign(entries.begin(), entries.end());
-  single_.resize(count);
-  body_a_.resize(count);
-  body_b_.resize(count);
-  const Columns columns{fields_.data(), count, body_a_.data(), body_b_.data()};
-  for (std::size_t e = 0; e < count; ++e) {
-    const Contact& c = set[entries[e]];
-    single_[e] = c.count() == 1 ? 1 : 0;
-    body_a_[e] = c.body_a;
-    body_b_[e] = c.body_b;
-    if (single_[e] == 0) continue;
-    const ContactPointState& p = set.points(c)[0];
-    const auto put = [&](Field f, double value) { *columns.at(f, e) = value; };
-    put(kNormalX, c.normal.x());
-    put(kNormalY, c.normal.y());
-    put(kFriction, c.friction);
-    put(kNormalImpulse, p.normal_impulse);
-    put(kTangentImpulse, p.tangent_impulse);
-    put(kTarget, p.target_normal_velocity);
-    put(kNormalMass, p.normal_mass);
-    put(kTangentMass, p.tangent_mass);
-    put(kNormalArmA, p.normal_arm_a);
-    put(kNormalArmB, p.normal_arm_b);
-    put(kTangentArmA, p.tangent_arm_a);
-    put(kTangentArmB, p.tangent_arm_b);
-    put(kInverseMassA, inertia.inverse_mass[c.body_a]);
-    put(kInverseMassB, inertia.inverse_mass[c.body_b]);
-    put(kInverseMomentA, inertia.inverse_moment[c.body_a]);
-    put(kInverseMomentB, inertia.inverse_moment[c.body_b]);
-  }
-}
-
-std::size_t SinglePointLanes::leading_single_points(std::size_t first, std::size_t count) const {
-  std::size_t n = 0;
-  while (n < count && single_[first + n] != 0) ++n;
-  return n;
-}
-
-double SinglePointLanes::solve(std::size_t first, std::size_t count, MotionState& s) {
+double solve_single_points(ContactSet& set, std::span<const std::uint32_t> contacts,
+                           const BodyInertia& inertia, MotionState& s) {
 #if GP_LANES_AVX2
-  const Columns columns{fields_.data(), contact_.size(), body_a_.data(), body_b_.data()};
   double largest = 0.0;
-  for (std::size_t done = 0; done < count; done += 4) {
-    largest = std::max(
-        largest, solve_four(columns, first + done, std::min<std::size_t>(4, count - done), s));
+  for (std::size_t done = 0; done < contacts.size(); done += 4) {
+    largest =
+        std::max(largest, solve_four(set, contacts.data() + done,
+                                     std::min<std::size_t>(4, contacts.size() - done), inertia, s));
   }
   return largest;
 #else
-  (void)first;
-  (void)count;
+  (void)set;
+  (void)contacts;
+  (void)inertia;
   (void)s;
-  throw std::logic_error("SinglePointLanes::solve: four lanes need AVX2");
+  throw std::logic_error("solve_single_points: four lanes need AVX2");
 #endif
 }
 
-void SinglePointLanes::unpack(ContactSet& set) const {
-  const std::size_t count = contact_.size();
-  for (std::size_t e = 0; e < count; ++e) {
-    if (single_[e] == 0) continue;
-    ContactPointState& p = set.points(set[contact_[e]])[0];
-    p.normal_impulse = fields_[kNormalImpulse * count + e];
-    p.tangent_impulse = fields_[kTangentImpulse * count + e];
-  }
-}
-
-const char* SinglePointLanes::name() {
+const char* single_points_name() {
   return four_lanes() ? "four at a time (AVX2)" : "one at a time";
 }
 

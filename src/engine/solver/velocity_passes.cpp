@@ -403,20 +403,27 @@ int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int itera
 
 namespace {
 
-// One pass over contacts of a colour, which share no movable body, from `entry` on in the
-// colours `lanes` packed (null: none packed): the one-point ones four at a time, the others one by
-// one. Returns the largest change.
-double solve_colour(ContactSet& contacts, std::size_t entry, std::span<const std::uint32_t> colour,
-                    const BodyInertia& inertia, MotionState& s, SinglePointLanes* lanes) {
+// One pass over contacts that share no movable body (a colour's, a level's): runs of one-point
+// contacts four at a time where the CPU has AVX2, the others one by one. Returns the largest
+// change.
+double solve_independent(ContactSet& contacts, std::span<const std::uint32_t> independent,
+                         const BodyInertia& inertia, MotionState& s) {
   double largest = 0.0;
-  for (std::size_t done = 0; done < colour.size();) {
-    if (lanes != nullptr) {
-      const std::size_t single = lanes->leading_single_points(entry + done, colour.size() - done);
-      largest = std::max(largest, lanes->solve(entry + done, single, s));
-      done += single;
-      if (done == colour.size()) break;
+  const bool lanes = four_lanes();
+  for (std::size_t done = 0; done < independent.size();) {
+    std::size_t single = 0;
+    while (lanes && done + single < independent.size() &&
+           contacts[independent[done + single]].count() == 1) {
+      ++single;
     }
-    largest = std::max(largest, solve_once(contacts, contacts[colour[done]], inertia, s));
+    // One contact alone is solved as fast one at a time.
+    if (single > 1) {
+      largest = std::max(
+          largest, solve_single_points(contacts, independent.subspan(done, single), inertia, s));
+      done += single;
+      continue;
+    }
+    largest = std::max(largest, solve_once(contacts, contacts[independent[done]], inertia, s));
     ++done;
   }
   return largest;
@@ -425,25 +432,17 @@ double solve_colour(ContactSet& contacts, std::size_t entry, std::span<const std
 }  // namespace
 
 int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
-                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s,
-                     SinglePointLanes& lanes) {
-  SinglePointLanes* packed = nullptr;
-  if (four_lanes() && !batches.coloured().empty()) {
-    lanes.pack(batches.coloured(), contacts, inertia);
-    packed = &lanes;
-  }
-  const int passes = solve_velocities_in(
+                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s) {
+  return solve_velocities_in(
       [&](const auto& solve) {
         return batches.run(
             solve,
-            [&](std::size_t entry, std::span<const std::uint32_t> colour) {
-              return solve_colour(contacts, entry, colour, inertia, s, packed);
+            [&](std::span<const std::uint32_t> independent) {
+              return solve_independent(contacts, independent, inertia, s);
             },
-            ContactBatches::Visit::kInterleaved);
+            ContactBatches::Visit::kLevels);
       },
       contacts, inertia, limits.iterations, limits.tolerance, s);
-  if (packed != nullptr) packed->unpack(contacts);
-  return passes;
 }
 
 void apply_restitution(ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {

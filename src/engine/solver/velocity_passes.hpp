@@ -12,7 +12,6 @@
 #include "engine/core.hpp"
 #include "engine/solver/contact_batches.hpp"
 #include "engine/solver/contact_set.hpp"
-#include "engine/solver/single_point_lanes.hpp"
 #include "scene/settings.hpp"
 
 namespace gp {
@@ -112,13 +111,12 @@ struct VelocityLimits {
   double tolerance;
 };
 
-/// solve_velocities in the order of `batches` of `contacts`, each task's contacts in two
-/// interleaved halves (ContactBatches::Visit), on the threads of the current task arena; the same
-/// result on any number of them. A colour's one-point contacts are solved four at a time where
-/// the CPU has AVX2, packed into `lanes` for the passes, with the same result.
+/// solve_velocities in the order of `batches` of `contacts`, each task's contacts by levels
+/// (ContactBatches::Visit), on the threads of the current task arena; the same result on any
+/// number of them. A level's or a colour's one-point contacts are solved four at a time where the
+/// CPU has AVX2 (solve_single_points), with the same result.
 int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
-                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s,
-                     SinglePointLanes& lanes);
+                     const BodyInertia& inertia, const VelocityLimits& limits, MotionState& s);
 
 /// One pass of sequential impulses over contact `c` of `contacts`, friction then normal, on the
 /// velocities of `s`; returns the largest change it made to its two bodies' velocities [m/s].

@@ -256,15 +256,14 @@ constexpr std::array kStages{
           "DD:impulseV TM:NewtonThirdLawMot",
           kLocalPass | kSubStepPass, collides,
           [](const StepContext& c) {
-            std::string text = "resting and persistent contacts; at most " +
-                               std::to_string(c.settings.velocity_iterations) +
-                               " passes, ending once a pass changes no velocity by more than the "
-                               "tolerance";
-            if (c.settings.coloured_island_contacts > 0) {
-              text += "; the one-point contacts of a coloured island " +
-                      std::string(SinglePointLanes::name());
-            }
-            return text;
+            std::string text =
+                "resting and persistent contacts; at most " +
+                std::to_string(c.settings.velocity_iterations) +
+                " passes, ending once a pass changes no velocity by more than the "
+                "tolerance; islands of one-point contacts by levels of contacts that "
+                "share no body, ";
+            if (c.settings.coloured_island_contacts > 0) text += "and coloured islands by colour, ";
+            return text + "their one-point contacts " + single_points_name();
           },
           on_contacts<&ContactSolver::solve_velocities>},
     Stage{"contact solver: restitution", "IM:col2D", kLocalPass | kSubStepPass, bounces,

@@ -1,0 +1,129 @@
+// The velocity passes over an island of one-point contacts, taken by levels (and, where the CPU
+// has AVX2, a level's contacts four at a time): the same bits as the passes one contact after the
+// other in the contacts' order, on one thread and on two.
+
+#include <algorithm>
+#include <bit>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include "engine/solver/contact_batches.hpp"
+#include "engine/solver/velocity_passes.hpp"
+
+namespace {
+namespace test_velocity_levels {
+
+constexpr int kColumns = 7;
+constexpr int kRows = 6;
+
+// Discs in a grid of kColumns × kRows (body 1 + column + kColumns · row), the bottom row on the
+// static ground (body 0), each touching its neighbours to the right, above and above-right, the
+// contacts in a random order. Normals, arms, masses, targets, velocities and warm starts random.
+struct DiscGrid {
+  std::mt19937_64 random;
+  gp::BodyInertia inertia;
+  gp::MotionState state;
+  gp::ContactSet contacts;
+  std::vector<gp::Vec2> positions;
+
+  explicit DiscGrid(std::uint64_t seed) : random(seed) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> positive(0.2, 3.0);
+    const std::size_t bodies = 1 + kColumns * kRows;
+    inertia.inverse_mass.assign(bodies, 0.0);
+    inertia.inverse_moment.assign(bodies, 0.0);
+    state.resize(bodies);
+    positions.assign(bodies, gp::Vec2::Zero());
+    const auto body = [](int column, int row) {
+      return static_cast<gp::BodyId>(1 + column + kColumns * row);
+    };
+    std::vector<std::pair<gp::BodyId, gp::BodyId>> pairs;
+    for (int row = 0; row < kRows; ++row) {
+      for (int column = 0; column < kColumns; ++column) {
+        const gp::BodyId b = body(column, row);
+        inertia.inverse_mass[b] = positive(random);
+        inertia.inverse_moment[b] = positive(random);
+        state.velocity[b] = {unit(random), unit(random)};
+        state.angular_velocity[b] = unit(random);
+        positions[b] = {column, row};
+        if (row == 0) pairs.emplace_back(b, 0);
+        if (column + 1 < kColumns) pairs.emplace_back(body(column + 1, row), b);
+        if (row + 1 < kRows) pairs.emplace_back(body(column, row + 1), b);
+        if (row + 1 < kRows && column + 1 < kColumns)
+          pairs.emplace_back(body(column + 1, row + 1), b);
+      }
+    }
+    std::shuffle(pairs.begin(), pairs.end(), random);
+    for (const auto& [a, b] : pairs) {
+      gp::Contact& c = contacts.append(1);
+      c.body_a = c.shape_a = a;
+      c.body_b = c.shape_b = b;
+      const double angle = 3.0 * unit(random);
+      c.normal = {std::cos(angle), std::sin(angle)};
+      c.friction = contacts.size() % 5 == 0 ? 0.0 : positive(random) / 3.0;
+      gp::ContactPointState& p = contacts.points(c)[0];
+      gp::set_arms(p, c.normal, {unit(random), unit(random)}, {unit(random), unit(random)});
+      // 1 / (1/m_A + 1/m_B + (r_A × d)²/I_A + (r_B × d)²/I_B), by hand.
+      const auto effective = [&](double arm_a, double arm_b) {
+        return 1.0 / (inertia.inverse_mass[a] + inertia.inverse_mass[b] +
+                      arm_a * arm_a * inertia.inverse_moment[a] +
+                      arm_b * arm_b * inertia.inverse_moment[b]);
+      };
+      p.normal_mass = effective(p.normal_arm_a, p.normal_arm_b);
+      p.tangent_mass = effective(p.tangent_arm_a, p.tangent_arm_b);
+      p.target_normal_velocity = 0.1 * unit(random);
+      p.normal_impulse = std::abs(unit(random));
+      p.tangent_impulse = c.friction * p.normal_impulse * unit(random);
+    }
+  }
+};
+
+std::uint64_t bits(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
+
+void check_same_bits(const DiscGrid& levels, const DiscGrid& in_order) {
+  for (std::size_t b = 0; b < levels.state.velocity.size(); ++b) {
+    INFO("body " << b);
+    CHECK(bits(levels.state.velocity[b].x()) == bits(in_order.state.velocity[b].x()));
+    CHECK(bits(levels.state.velocity[b].y()) == bits(in_order.state.velocity[b].y()));
+    CHECK(bits(levels.state.angular_velocity[b]) == bits(in_order.state.angular_velocity[b]));
+  }
+  for (std::size_t i = 0; i < levels.contacts.size(); ++i) {
+    const gp::ContactPointState& p = levels.contacts.points(levels.contacts[i])[0];
+    const gp::ContactPointState& q = in_order.contacts.points(in_order.contacts[i])[0];
+    INFO("contact " << i);
+    CHECK(bits(p.normal_impulse) == bits(q.normal_impulse));
+    CHECK(bits(p.tangent_impulse) == bits(q.tangent_impulse));
+  }
+}
+
+TEST_CASE("Velocity passes by levels give the same bits as in the contacts' order",
+          "[via:GD:impulse][via:DD:impulseV]") {
+  constexpr int kPasses = 6;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    for (const int threads : {1, 2}) {
+      INFO("seed " << seed << ", " << threads << " threads");
+      DiscGrid in_order(seed);
+      const int passes_in_order =
+          gp::solve_velocities(in_order.contacts, in_order.inertia, kPasses, 0.0, in_order.state);
+      DiscGrid levels(seed);
+      gp::ContactBatches batches;
+      batches.build(levels.contacts, {}, levels.inertia, levels.positions, {4096, 0});
+      const int passes_levels = tbb::task_arena(threads).execute([&] {
+        return gp::solve_velocities(batches, levels.contacts, levels.inertia, {kPasses, 0.0},
+                                    levels.state);
+      });
+      CHECK(passes_levels == passes_in_order);
+      check_same_bits(levels, in_order);
+    }
+  }
+}
+
+}  // namespace test_velocity_levels
+}  // namespace
