@@ -61,7 +61,7 @@ using Visit = gp::ContactBatches::Visit;
 std::vector<std::uint32_t> visits(gp::ContactBatches& batches, const Graph& g,
                                   gp::IslandSplitting splitting,
                                   const std::vector<gp::WarmStart>& last_kept = {},
-                                  Visit visit = Visit::kInOrder) {
+                                  Visit visit = {}) {
   batches.build(g.contacts, last_kept, g.inertia, g.positions, splitting);
   std::vector<std::uint32_t> order;
   const auto visit_one = [&](std::uint32_t i) {
@@ -83,7 +83,7 @@ std::vector<std::uint32_t> visits(gp::ContactBatches& batches, const Graph& g,
 // The same, built afresh.
 std::vector<std::uint32_t> visits(const Graph& g,
                                   gp::IslandSplitting splitting = {0, kColouredAbove},
-                                  Visit visit = Visit::kInOrder) {
+                                  Visit visit = {}) {
   gp::ContactBatches batches;
   return visits(batches, g, splitting, {}, visit);
 }
@@ -109,17 +109,18 @@ TEST_CASE("Interleaved, each island's contacts are visited in two halves, taken 
   // The islands above, {1, 3, 5} and {0, 2, 4}: halves {1, 3} and {5}, {0, 2} and {4}; one
   // thread takes both islands at once, and each is interleaved on its own.
   const Graph g(5, {{3, 0}, {1, 0}, {3, 4}, {2, 1}, {4, 0}, {2, 0}});
-  CHECK(visits(g, {0, kColouredAbove}, Visit::kInterleaved) ==
+  CHECK(visits(g, {0, kColouredAbove}, Visit{.interleaved = true}) ==
         std::vector<std::uint32_t>{1, 5, 3, 0, 4, 2});
   // A chain's six contacts, every two in a row sharing a body: none of the pairs visited in a
   // row does.
-  CHECK(visits(chain(6), {0, kColouredAbove}, Visit::kInterleaved) ==
+  CHECK(visits(chain(6), {0, kColouredAbove}, Visit{.interleaved = true}) ==
         std::vector<std::uint32_t>{0, 3, 1, 4, 2, 5});
 }
 
 // The runs of contacts a pass by levels hands over at once, each as a list, and the contacts it
-// visits one at a time, each a list of one, in the order one thread visits them.
-std::vector<std::vector<std::uint32_t>> level_runs(const Graph& g) {
+// visits one at a time, each a list of one, in the order one thread visits them, the tasks not
+// levelled in interleaved halves or in order.
+std::vector<std::vector<std::uint32_t>> level_runs(const Graph& g, bool interleaved = true) {
   gp::ContactBatches batches;
   batches.build(g.contacts, {}, g.inertia, g.positions, {0, kColouredAbove});
   std::vector<std::vector<std::uint32_t>> runs;
@@ -133,7 +134,7 @@ std::vector<std::vector<std::uint32_t>> level_runs(const Graph& g) {
           runs.emplace_back(independent.begin(), independent.end());
           return 0.0;
         },
-        Visit::kLevels);
+        Visit{.by_levels = true, .interleaved = interleaved});
   });
   return runs;
 }
@@ -147,12 +148,14 @@ TEST_CASE("By levels, an island of one-point contacts is visited level after lev
   CHECK(level_runs(row) == Runs{{0, 1, 2}, {3}, {4}});
   // A chain: every contact follows the one before, a level each.
   CHECK(level_runs(chain(4)) == Runs{{0}, {1}, {2}, {3}});
-  // A two-point contact in the island: visited in interleaved halves instead, one at a time.
+  // A two-point contact in the island: visited one at a time instead, in interleaved halves or
+  // in order.
   Graph mixed(4, {{1, 0}, {2, 0}, {3, 0}, {1, 2}});
   gp::Contact& two = mixed.contacts.append(2);
   two.body_a = two.shape_a = 2;
   two.body_b = two.shape_b = 3;
   CHECK(level_runs(mixed) == Runs{{0}, {3}, {1}, {4}, {2}});
+  CHECK(level_runs(mixed, false) == Runs{{0}, {1}, {2}, {3}, {4}});
 }
 
 TEST_CASE("A large island is visited colour after colour, no colour sharing a movable body") {

@@ -77,17 +77,21 @@ class ContactBatches {
   /// The islands of the contacts build was given.
   const ContactIslands& islands() const { return islands_; }
 
-  /// How a task's contacts are visited: in order; in two interleaved halves (the first, the first
-  /// past the middle, the second, ...); or by levels. Contacts next to each other in the
-  /// contacts' order often share a body (a shape's contacts follow one another), so that each
-  /// solve that moves bodies waits on the one before; from halves apart they seldom do, and the
-  /// processor overlaps two solves. Passes that only read bodies lose by it the one stream of
-  /// memory they walk. By levels, a task of one-point contacts is taken level by level, and the
-  /// others in halves. A contact's level is one more than the highest level of the task's
-  /// contacts before it that share a movable body with it: a level's contacts share none, and
-  /// each body meets its contacts in the contacts' order, so that solved level by level they give
-  /// the same result to the bit as in order, with each level's contacts free to be solved at once.
-  enum class Visit { kInOrder, kInterleaved, kLevels };
+  /// How a pass visits a task's contacts. Levels: a contact's level is one more than the highest
+  /// level of the task's contacts before it that share a movable body with it. A level's contacts
+  /// share none, and each body meets its contacts in the contacts' order, so that level by level
+  /// they give the same result to the bit as in order, each level's contacts free to be solved
+  /// at once. Interleaved halves (the first, the first past the middle, the second, ...):
+  /// contacts next to each other in the contacts' order often share a body (a shape's contacts
+  /// follow one another), so that each solve that moves bodies waits on the one before; from
+  /// halves apart they seldom do, and the processor overlaps two solves, where passes that only
+  /// read bodies lose by it the one stream of memory they walk.
+  struct Visit {
+    /// A task of one-point contacts level by level, each level to solve_independent.
+    bool by_levels = false;
+    /// The other tasks' contacts in two interleaved halves, else in order.
+    bool interleaved = false;
+  };
 
   /// The largest value `solve(contact index)` returns over the contacts: stage after stage, the
   /// tasks of a stage on the threads the current task arena allows, a task's contacts in order.
@@ -100,7 +104,7 @@ class ContactBatches {
           for (const std::uint32_t i : contacts) largest = std::max(largest, solve(i));
           return largest;
         },
-        Visit::kInOrder);
+        Visit{});
   }
 
   /// The same, a task's contacts visited as `visit` says, but contacts that share no movable body
@@ -115,13 +119,13 @@ class ContactBatches {
     };
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
       // In order, the tasks of a block follow one another in order_: one loop over them all.
-      if (visit == Visit::kInOrder) {
+      if (!visit.by_levels && !visit.interleaved) {
         for (std::uint32_t e = first == 0 ? 0 : task_end_[first - 1]; e < task_end_[last - 1]; ++e)
           largest = std::max(largest, solve(order_[e]));
         return largest;
       }
       for (std::size_t t = first; t < last; ++t) {
-        if (visit == Visit::kLevels && levelled(t)) {
+        if (visit.by_levels && levelled(t)) {
           for (std::uint32_t l = levels_of_[t].first; l < levels_of_[t].last; ++l) {
             const std::uint32_t begin = l == 0 ? 0 : level_end_[l - 1];
             largest =
@@ -131,6 +135,10 @@ class ContactBatches {
         }
         const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
         const std::uint32_t end = task_end_[t];
+        if (!visit.interleaved) {
+          for (std::uint32_t e = begin; e < end; ++e) largest = std::max(largest, solve(order_[e]));
+          continue;
+        }
         const std::uint32_t middle = begin + (end - begin + 1) / 2;
         for (std::uint32_t e = begin, f = middle; e < middle; ++e, ++f) {
           largest = std::max(largest, solve(order_[e]));

@@ -165,12 +165,12 @@ Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, c
   return turned(deepest());
 }
 
-// One position pass over a colour's contacts, which share no movable body: those between two
-// centred discs four at a time (correct_centred_discs, only where four_lanes()), the others by
-// `solve`. Returns 1 if one overlapped by more than two slops, else 0, as `solve` does.
+// One position pass over a colour's or a level's contacts, which share no movable body: those
+// between two centred discs four at a time (correct_centred_discs, only where four_lanes()), the
+// others by `solve`. Returns 1 if one overlapped by more than two slops, else 0, as `solve` does.
 template <typename Solve>
-double correct_colour(const ContactSet& contacts, std::span<const std::uint32_t> colour,
-                      const Solve& solve, const DiscPositionInput& in, MotionState& s) {
+double correct_independent(const ContactSet& contacts, std::span<const std::uint32_t> independent,
+                           const Solve& solve, const DiscPositionInput& in, MotionState& s) {
   constexpr std::size_t kBlock = 128;
   std::array<std::uint32_t, kBlock> discs;
   double deep = 0.0;
@@ -179,7 +179,7 @@ double correct_colour(const ContactSet& contacts, std::span<const std::uint32_t>
     if (correct_centred_discs(contacts, std::span(discs).first(held), in, s)) deep = 1.0;
     held = 0;
   };
-  for (const std::uint32_t i : colour) {
+  for (const std::uint32_t i : independent) {
     const Contact& c = contacts[i];
     if (c.count() != 1 || !centred_discs(contacts.points(c)[0])) {
       deep = std::max(deep, solve(i));
@@ -257,13 +257,13 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   for (bool deep = true; deep && iterations-- > 0;) {
     if constexpr (std::is_same_v<Order, ContactBatches>) {
       if (four_lanes()) {
-        deep = 0.0 !=
-               order.run(
-                   solve,
-                   [&](std::span<const std::uint32_t> colour) {
-                     return correct_colour(contacts, colour, solve, {inertia, detected, slop}, s);
-                   },
-                   ContactBatches::Visit::kInOrder);
+        deep = 0.0 != order.run(
+                          solve,
+                          [&](std::span<const std::uint32_t> independent) {
+                            return correct_independent(contacts, independent, solve,
+                                                       {inertia, detected, slop}, s);
+                          },
+                          ContactBatches::Visit{.by_levels = true});
         continue;
       }
     }

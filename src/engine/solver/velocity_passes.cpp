@@ -440,7 +440,7 @@ int solve_velocities(const ContactBatches& batches, ContactSet& contacts,
             [&](std::span<const std::uint32_t> independent) {
               return solve_independent(contacts, independent, inertia, s);
             },
-            ContactBatches::Visit::kLevels);
+            ContactBatches::Visit{.by_levels = true, .interleaved = true});
       },
       contacts, inertia, limits.iterations, limits.tolerance, s);
 }
