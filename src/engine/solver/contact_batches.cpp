@@ -56,7 +56,7 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   level_end_.clear();
   levels_of_.assign(task_end_.size(), {});
   if (!task_end_.empty()) body_level_.assign(bodies, 0);
-  for (std::size_t t = 0; t < task_end_.size(); ++t) level_task(contacts, inertia, t);
+  for (std::size_t t = 0; t < task_end_.size(); ++t) level_task(contacts, t);
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
 }
 
@@ -248,8 +248,7 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
   }
 }
 
-void ContactBatches::level_task(const ContactSet& contacts, const BodyInertia& inertia,
-                                std::size_t t) {
+void ContactBatches::level_task(const ContactSet& contacts, std::size_t t) {
   const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
   const std::uint32_t end = task_end_[t];
   for (std::uint32_t e = begin; e < end; ++e) {
@@ -258,8 +257,8 @@ void ContactBatches::level_task(const ContactSet& contacts, const BodyInertia& i
   // A contact's level, from 1, as its bodies' last contacts left them; its bodies then take it.
   const auto level_of = [&](std::uint32_t e) {
     const Contact& c = contacts[order_[e]];
-    const bool a = movable(inertia, c.body_a);
-    const bool b = movable(inertia, c.body_b);
+    const bool a = movable_[c.body_a] != 0;
+    const bool b = movable_[c.body_b] != 0;
     const std::uint32_t level =
         1 + std::max(a ? body_level_[c.body_a] : 0, b ? body_level_[c.body_b] : 0);
     if (a) body_level_[c.body_a] = level;

@@ -192,7 +192,7 @@ class ContactBatches {
             std::size_t parted_above);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
   /// Levels task `t` of order_ into level_order_ if its contacts all have one point (see Visit).
-  void level_task(const ContactSet& contacts, const BodyInertia& inertia, std::size_t t);
+  void level_task(const ContactSet& contacts, std::size_t t);
   bool levelled(std::size_t t) const { return levels_of_[t].last > levels_of_[t].first; }
   void halve_bodies(std::span<const Vec2> positions, std::uint32_t first, std::uint32_t last,
                     int depth, std::uint32_t code);
