@@ -156,6 +156,13 @@ TEST_CASE("By levels, an island of one-point contacts is visited level after lev
   two.body_b = two.shape_b = 3;
   CHECK(level_runs(mixed) == Runs{{0}, {3}, {1}, {4}, {2}});
   CHECK(level_runs(mixed, false) == Runs{{0}, {1}, {2}, {3}, {4}});
+  // Islands {1, 2} and {5, 6} of one-point contacts about island {3, 4}, which has a two-point
+  // contact (7): each levelled island's levels hold its own contacts only.
+  Graph three(7, {{1, 0}, {2, 0}, {1, 2}, {3, 0}, {5, 0}, {6, 0}, {5, 6}});
+  gp::Contact& pair = three.contacts.append(2);
+  pair.body_a = pair.shape_a = 3;
+  pair.body_b = pair.shape_b = 4;
+  CHECK(level_runs(three) == Runs{{0, 1}, {2}, {3}, {7}, {4, 5}, {6}});
 }
 
 TEST_CASE("A large island is visited colour after colour, no colour sharing a movable body") {

@@ -37,6 +37,9 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
     return islands_.island_end[root] - islands_.island_start[root];
   };
   bool any_coloured = false;
+  level_end_.clear();
+  levels_of_.clear();
+  body_scratch_.assign(bodies, 0);
   for (std::size_t r = 0; r < bodies; ++r) {
     const std::uint32_t start = islands_.island_start[r];
     const std::uint32_t end = islands_.island_end[r];
@@ -46,17 +49,22 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
     } else if (splitting.parted_above > 0 && contacts_in(r) > splitting.parted_above) {
       parted_.push_back({r, 0, 0});
     } else {
-      order_.insert(order_.end(), islands_.order.begin() + start, islands_.order.begin() + end);
+      order_.resize(order_.size() + (end - start));
       task_end_.push_back(static_cast<std::uint32_t>(order_.size()));
+      place_task(contacts, {islands_.order.data() + start, end - start});
     }
   }
   part(contacts, inertia, positions, splitting.parted_above);
   first_colour_stage_ = stage_end_.size();
-  level_order_.clear();
-  level_end_.clear();
-  levels_of_.assign(task_end_.size(), {});
-  if (!task_end_.empty()) body_level_.assign(bodies, 0);
-  for (std::size_t t = 0; t < task_end_.size(); ++t) level_task(contacts, t);
+  // The parts' tasks, placed from a copy of their contacts (part leaves room for all of them).
+  if (levels_of_.size() < task_end_.size()) body_scratch_.assign(bodies, 0);
+  while (levels_of_.size() < task_end_.size()) {
+    const std::size_t t = levels_of_.size();
+    const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
+    const std::uint32_t count = task_end_[t] - begin;
+    std::copy_n(order_.begin() + begin, count, contact_scratch_.begin());
+    place_task(contacts, {contact_scratch_.data(), count});
+  }
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
 }
 
@@ -102,7 +110,7 @@ void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t
                                   std::uint32_t last, int depth, std::uint32_t code) {
   const auto begin = part_bodies_.begin();
   if (depth == 0) {
-    for (auto b = begin + first; b != begin + last; ++b) part_code_[*b] = code;
+    for (auto b = begin + first; b != begin + last; ++b) body_scratch_[*b] = code;
     return;
   }
   // Ties by body id, so that the halves do not depend on the order the bodies were listed in. A
@@ -176,8 +184,8 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
     return;
   }
   constexpr std::uint32_t kUnlisted = ~std::uint32_t{0};
-  part_code_.assign(inertia.inverse_mass.size(), kUnlisted);
-  group_of_.resize(contacts.size());
+  body_scratch_.assign(inertia.inverse_mass.size(), kUnlisted);
+  contact_scratch_.resize(contacts.size());
   std::size_t groups = 0;
   for (PartedIsland& island : parted_) {
     const std::uint32_t start = islands_.island_start[island.root];
@@ -186,8 +194,8 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
     for (std::uint32_t e = start; e < end; ++e) {
       const Contact& c = contacts[islands_.order[e]];
       for (const BodyId b : {c.body_a, c.body_b}) {
-        if (movable(inertia, b) && part_code_[b] == kUnlisted) {
-          part_code_[b] = 0;
+        if (movable(inertia, b) && body_scratch_[b] == kUnlisted) {
+          body_scratch_[b] = 0;
           part_bodies_.push_back(b);
         }
       }
@@ -202,17 +210,17 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
     // both, whose heap number is their codes' common leading bits under a leading 1.
     for (std::uint32_t e = start; e < end; ++e) {
       const Contact& c = contacts[islands_.order[e]];
-      const std::uint32_t a = part_code_[movable(inertia, c.body_a) ? c.body_a : c.body_b];
-      const std::uint32_t b = part_code_[movable(inertia, c.body_b) ? c.body_b : c.body_a];
+      const std::uint32_t a = body_scratch_[movable(inertia, c.body_a) ? c.body_a : c.body_b];
+      const std::uint32_t b = body_scratch_[movable(inertia, c.body_b) ? c.body_b : c.body_a];
       const int shift = std::bit_width(a ^ b);
-      group_of_[islands_.order[e]] = ((std::uint32_t{1} << depth) | a) >> shift;
+      contact_scratch_[islands_.order[e]] = ((std::uint32_t{1} << depth) | a) >> shift;
     }
   }
   group_start_.assign(groups, 0);
   for (const PartedIsland& island : parted_) {
     for (std::uint32_t e = islands_.island_start[island.root]; e < islands_.island_end[island.root];
          ++e) {
-      ++group_start_[island.first_group + group_of_[islands_.order[e]]];
+      ++group_start_[island.first_group + contact_scratch_[islands_.order[e]]];
     }
   }
   // The parts first, beside the islands not cut; then, one task per island, the contacts between
@@ -243,57 +251,55 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
     for (std::uint32_t e = islands_.island_start[island.root]; e < islands_.island_end[island.root];
          ++e) {
       const std::uint32_t i = islands_.order[e];
-      order_[group_start_[island.first_group + group_of_[i]]++] = i;
+      order_[group_start_[island.first_group + contact_scratch_[i]]++] = i;
     }
   }
 }
 
-void ContactBatches::level_task(const ContactSet& contacts, std::size_t t) {
+void ContactBatches::place_task(const ContactSet& contacts, std::span<const std::uint32_t> task) {
+  const std::size_t t = levels_of_.size();
   const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
-  const std::uint32_t end = task_end_[t];
-  for (std::uint32_t e = begin; e < end; ++e) {
-    if (contacts[order_[e]].count() != 1) return;
+  const auto levelled = std::all_of(task.begin(), task.end(),
+                                    [&](std::uint32_t i) { return contacts[i].count() == 1; });
+  if (!levelled) {
+    std::copy(task.begin(), task.end(), order_.begin() + begin);
+    append(levels_of_, {});
+    return;
   }
   // A contact's level, from 1, as its bodies' last contacts left them; its bodies then take it.
-  const auto level_of = [&](std::uint32_t e) {
-    const Contact& c = contacts[order_[e]];
+  const auto level_of = [&](std::uint32_t i) {
+    const Contact& c = contacts[i];
     const bool a = movable_[c.body_a] != 0;
     const bool b = movable_[c.body_b] != 0;
     const std::uint32_t level =
-        1 + std::max(a ? body_level_[c.body_a] : 0, b ? body_level_[c.body_b] : 0);
-    if (a) body_level_[c.body_a] = level;
-    if (b) body_level_[c.body_b] = level;
+        1 + std::max(a ? body_scratch_[c.body_a] : 0, b ? body_scratch_[c.body_b] : 0);
+    if (a) body_scratch_[c.body_a] = level;
+    if (b) body_scratch_[c.body_b] = level;
     return level;
   };
   const auto forget = [&] {
-    for (std::uint32_t e = begin; e < end; ++e) {
-      const Contact& c = contacts[order_[e]];
-      body_level_[c.body_a] = body_level_[c.body_b] = 0;
-    }
+    for (const std::uint32_t i : task)
+      body_scratch_[contacts[i].body_a] = body_scratch_[contacts[i].body_b] = 0;
   };
   // The levels are found twice, to count each level's contacts and then to place them: a second
   // pass over the task costs less than the room for each contact's level.
   const auto first = static_cast<std::uint32_t>(level_end_.size());
-  for (std::uint32_t e = begin; e < end; ++e) {
-    const std::uint32_t level = level_of(e);
+  for (const std::uint32_t i : task) {
+    const std::uint32_t level = level_of(i);
     if (first + level > level_end_.size()) append(level_end_, 0);
     ++level_end_[first + level - 1];
   }
   forget();
   // Each level's count into where it starts, and, as its contacts are placed, where it ends.
-  auto start = static_cast<std::uint32_t>(level_order_.size());
+  std::uint32_t start = begin;
   for (std::size_t l = first; l < level_end_.size(); ++l) {
     const std::uint32_t count = level_end_[l];
     level_end_[l] = start;
     start += count;
   }
-  reserve_for(level_order_, start);
-  level_order_.resize(start);
-  for (std::uint32_t e = begin; e < end; ++e) {
-    level_order_[level_end_[first + level_of(e) - 1]++] = order_[e];
-  }
+  for (const std::uint32_t i : task) order_[level_end_[first + level_of(i) - 1]++] = i;
   forget();
-  levels_of_[t] = {first, static_cast<std::uint32_t>(level_end_.size())};
+  append(levels_of_, {first, static_cast<std::uint32_t>(level_end_.size())});
 }
 
 void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inertia,

@@ -64,12 +64,12 @@ class ContactBatches {
   /// between two parts joins the smallest group of parts holding both. Second stage: per cut
   /// island, one task of its contacts between parts, group by group from the smallest up. Last
   /// stages: each colour of the coloured islands, one task per contact. No two tasks of a stage
-  /// share a body that the solver moves. The tasks of the first two stages whose contacts all have
-  /// one point are also put in levels (Visit). Reuses its arrays' room. `last_kept` are the points
-  /// of the contacts of the last pass, as keep_impulses kept them: when `contacts` are those same
-  /// contacts (the same pairs of shapes, as many points each) as the last build's, the bodies as
-  /// movable and the splitting the same (a pile at rest), the islands, parts, levels and colours
-  /// of the last build are kept.
+  /// share a body that the solver moves. The contacts of a task of the first two stages whose
+  /// contacts all have one point are put in levels (Visit), level after level. Reuses its arrays'
+  /// room. `last_kept` are the points of the contacts of the last pass, as keep_impulses kept them:
+  /// when `contacts` are those same contacts (the same pairs of shapes, as many points each) as the
+  /// last build's, the bodies as movable and the splitting the same (a pile at rest), the islands,
+  /// parts, levels and colours of the last build are kept.
   void build(const ContactSet& contacts, std::span<const WarmStart> last_kept,
              const BodyInertia& inertia, std::span<const Vec2> positions,
              const IslandSplitting& splitting);
@@ -94,7 +94,8 @@ class ContactBatches {
   };
 
   /// The largest value `solve(contact index)` returns over the contacts: stage after stage, the
-  /// tasks of a stage on the threads the current task arena allows, a task's contacts in order.
+  /// tasks of a stage on the threads the current task arena allows, a task's contacts in order (a
+  /// task of one-point contacts in its levels' order, which gives the same result).
   template <typename Solve>
   double run(const Solve& solve) const {
     return run(
@@ -125,16 +126,15 @@ class ContactBatches {
         return largest;
       }
       for (std::size_t t = first; t < last; ++t) {
+        const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
+        const std::uint32_t end = task_end_[t];
         if (visit.by_levels && levelled(t)) {
-          for (std::uint32_t l = levels_of_[t].first; l < levels_of_[t].last; ++l) {
-            const std::uint32_t begin = l == 0 ? 0 : level_end_[l - 1];
-            largest =
-                std::max(largest, solve_independent(entries(level_order_, begin, level_end_[l])));
+          for (std::uint32_t l = levels_of_[t].first, level = begin; l < levels_of_[t].last; ++l) {
+            largest = std::max(largest, solve_independent(entries(order_, level, level_end_[l])));
+            level = level_end_[l];
           }
           continue;
         }
-        const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
-        const std::uint32_t end = task_end_[t];
         if (!visit.interleaved) {
           for (std::uint32_t e = begin; e < end; ++e) largest = std::max(largest, solve(order_[e]));
           continue;
@@ -191,8 +191,9 @@ class ContactBatches {
   void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
             std::size_t parted_above);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
-  /// Levels task `t` of order_ into level_order_ if its contacts all have one point (see Visit).
-  void level_task(const ContactSet& contacts, std::size_t t);
+  /// Places the next task's contacts, `task` in their order (not in order_), into its room in
+  /// order_: level after level if they all have one point (see Visit), else as they are.
+  void place_task(const ContactSet& contacts, std::span<const std::uint32_t> task);
   bool levelled(std::size_t t) const { return levels_of_[t].last > levels_of_[t].first; }
   void halve_bodies(std::span<const Vec2> positions, std::uint32_t first, std::uint32_t last,
                     int depth, std::uint32_t code);
@@ -208,9 +209,12 @@ class ContactBatches {
   std::vector<std::uint32_t> stage_end_;  // per stage: one past its last task
   std::size_t first_colour_stage_ = 0;
   std::vector<PartedIsland> parted_;
-  std::vector<BodyId> part_bodies_;         // the movable bodies of the island being cut
-  std::vector<std::uint32_t> part_code_;    // per body: the part it fell into, as halving bits
-  std::vector<std::uint32_t> group_of_;     // per contact of a cut island: its group
+  std::vector<BodyId> part_bodies_;  // the movable bodies of the island being cut
+  // Scratch of the build, per body: while parting, the part a body fell into, as halving bits;
+  // while levelling, the level of its last contact. Per contact: while parting, the group of a
+  // contact of a cut island; then a part's contacts, while they are placed.
+  std::vector<std::uint32_t> body_scratch_;
+  std::vector<std::uint32_t> contact_scratch_;
   std::vector<std::uint32_t> group_start_;  // per group: its first entry in order_
   std::vector<std::uint64_t> colours_;      // per body: the colours its contacts took, as bits
   std::vector<std::uint8_t> bucket_;        // per contact of a large island: its colour's bucket
@@ -219,9 +223,7 @@ class ContactBatches {
     std::uint32_t first = 0, last = 0;
   };
   std::vector<Levels> levels_of_;
-  std::vector<std::uint32_t> level_order_;  // the levelled tasks' contacts, level after level
-  std::vector<std::uint32_t> level_end_;    // per level: one past its last entry in level_order_
-  std::vector<std::uint32_t> body_level_;   // per body: while levelling, its last contact's level
+  std::vector<std::uint32_t> level_end_;  // per level: one past its last entry in order_
 };
 
 }  // namespace gp

@@ -1,6 +1,6 @@
-// The velocity passes over an island of one-point contacts, taken by levels (and, where the CPU
-// has AVX2, a level's contacts four at a time): the same bits as the passes one contact after the
-// other in the contacts' order, on one thread and on two.
+// The velocity and position passes over an island of one-point contacts, taken by levels (and,
+// where the CPU has AVX2, a level's contacts four at a time): the same bits as the passes one
+// contact after the other in the contacts' order, on one thread and on two.
 
 #include <algorithm>
 #include <bit>
@@ -12,11 +12,13 @@
 
 #include <tbb/task_arena.h>
 
+#include "engine/collision/body_shapes.hpp"
 #include "engine/solver/contact_batches.hpp"
+#include "engine/solver/position_passes.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
 namespace {
-namespace test_velocity_levels {
+namespace test_contact_levels {
 
 constexpr int kColumns = 7;
 constexpr int kRows = 6;
@@ -28,6 +30,8 @@ struct DiscGrid {
   std::mt19937_64 random;
   gp::BodyInertia inertia;
   gp::MotionState state;
+  gp::MotionState detected;
+  gp::BodyShapes shapes;
   gp::ContactSet contacts;
   std::vector<gp::Vec2> positions;
 
@@ -51,12 +55,16 @@ struct DiscGrid {
         state.velocity[b] = {unit(random), unit(random)};
         state.angular_velocity[b] = unit(random);
         positions[b] = {column, row};
+        state.position[b] = {0.95 * column, 0.95 * row + 0.5};
         if (row == 0) pairs.emplace_back(b, 0);
         if (column + 1 < kColumns) pairs.emplace_back(body(column + 1, row), b);
         if (row + 1 < kRows) pairs.emplace_back(body(column, row + 1), b);
         if (row + 1 < kRows && column + 1 < kColumns)
           pairs.emplace_back(body(column + 1, row + 1), b);
       }
+    }
+    for (std::size_t b = 0; b < bodies; ++b) {
+      shapes.add(static_cast<gp::BodyId>(b), gp::Shape::circle(0.5), 0.0, 0.5, b > 0);
     }
     std::shuffle(pairs.begin(), pairs.end(), random);
     for (const auto& [a, b] : pairs) {
@@ -79,6 +87,17 @@ struct DiscGrid {
       p.target_normal_velocity = 0.1 * unit(random);
       p.normal_impulse = std::abs(unit(random));
       p.tangent_impulse = c.friction * p.normal_impulse * unit(random);
+      // For the position passes: discs about their centres, overlapping by 5 cm but the ground's
+      // (body 0, at the origin), by up to 3 cm; the deepest points the radius along the normal.
+      p.anchor_a = p.anchor_b = gp::AnchorKind::kCentredDisc;
+      p.tangent_arm_a = -0.5;
+      p.tangent_arm_b = 0.5;
+      p.depth = static_cast<float>(b == 0 ? 0.03 * std::abs(unit(random)) : 0.05);
+    }
+    // Since detection the discs moved by up to 1 mm.
+    detected = state;
+    for (std::size_t b = 1; b < bodies; ++b) {
+      state.position[b] += gp::Vec2{1e-3 * unit(random), 1e-3 * unit(random)};
     }
   }
 };
@@ -125,5 +144,36 @@ TEST_CASE("Velocity passes by levels give the same bits as in the contacts' orde
   }
 }
 
-}  // namespace test_velocity_levels
+TEST_CASE("Position passes by levels give the same bits as in the contacts' order",
+          "[via:DD:impulseV]") {
+  constexpr gp::PositionLimits kLimits{4, 0.005};
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    for (const int threads : {1, 2}) {
+      INFO("seed " << seed << ", " << threads << " threads");
+      DiscGrid in_order(seed);
+      gp::PositionCorrection one;
+      one.correct(in_order.contacts, {in_order.shapes, in_order.inertia, in_order.detected},
+                  kLimits, in_order.state);
+      DiscGrid levels(seed);
+      gp::ContactBatches batches;
+      batches.build(levels.contacts, {}, levels.inertia, levels.positions, {4096, 0});
+      gp::PositionCorrection by_levels;
+      const std::vector<gp::Vec2> before = levels.state.position;
+      tbb::task_arena(threads).execute([&] {
+        by_levels.correct(batches, levels.contacts,
+                          {levels.shapes, levels.inertia, levels.detected}, kLimits, levels.state);
+      });
+      for (std::size_t b = 0; b < levels.state.position.size(); ++b) {
+        INFO("body " << b);
+        CHECK(bits(levels.state.position[b].x()) == bits(in_order.state.position[b].x()));
+        CHECK(bits(levels.state.position[b].y()) == bits(in_order.state.position[b].y()));
+        CHECK(bits(levels.state.angle[b]) == bits(in_order.state.angle[b]));
+      }
+      // The passes moved the discs: the comparison is not of untouched states.
+      CHECK(levels.state.position != before);
+    }
+  }
+}
+
+}  // namespace test_contact_levels
 }  // namespace
