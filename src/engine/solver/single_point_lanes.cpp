@@ -16,28 +16,23 @@ namespace {
 #if GP_LANES_AVX2
 
 // The kernel loads four doubles at a time from a point's first nine fields and from a contact's
-// normal on: they must lie one after the other.
-constexpr bool follow_one_another(std::size_t first, std::size_t k, std::size_t field) {
-  return field == first + k * sizeof(double);
+// normal on: they must lie one after the other, a double apart.
+template <std::size_t N>
+constexpr bool one_after_another(const std::array<std::size_t, N>& offsets) {
+  for (std::size_t k = 1; k < N; ++k) {
+    if (offsets[k] != offsets[0] + k * sizeof(double)) return false;
+  }
+  return true;
 }
-static_assert(follow_one_another(offsetof(ContactPointState, normal_impulse), 1,
-                                 offsetof(ContactPointState, tangent_impulse)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 2,
-                                 offsetof(ContactPointState, target_normal_velocity)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 3,
-                                 offsetof(ContactPointState, normal_mass)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 4,
-                                 offsetof(ContactPointState, tangent_mass)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 5,
-                                 offsetof(ContactPointState, normal_arm_a)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 6,
-                                 offsetof(ContactPointState, normal_arm_b)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 7,
-                                 offsetof(ContactPointState, tangent_arm_a)) &&
-              follow_one_another(offsetof(ContactPointState, normal_impulse), 8,
-                                 offsetof(ContactPointState, tangent_arm_b)));
+static_assert(one_after_another(std::array{
+    offsetof(ContactPointState, normal_impulse), offsetof(ContactPointState, tangent_impulse),
+    offsetof(ContactPointState, target_normal_velocity), offsetof(ContactPointState, normal_mass),
+    offsetof(ContactPointState, tangent_mass), offsetof(ContactPointState, normal_arm_a),
+    offsetof(ContactPointState, normal_arm_b), offsetof(ContactPointState, tangent_arm_a),
+    offsetof(ContactPointState, tangent_arm_b)}));
 // The normal, the friction, and 8 bytes more of the contact, which the kernel loads and drops.
-static_assert(follow_one_another(offsetof(Contact, normal), 2, offsetof(Contact, friction)) &&
+static_assert(one_after_another(std::array{offsetof(Contact, normal), offsetof(Contact, normal) + 8,
+                                           offsetof(Contact, friction)}) &&
               offsetof(Contact, friction) + 2 * sizeof(double) <= sizeof(Contact));
 
 // The points and bodies of four contacts, a lane each.
