@@ -114,9 +114,8 @@ class ContactBatches {
   /// once, with the same result.
   template <typename Solve, typename SolveIndependent>
   double run(const Solve& solve, const SolveIndependent& solve_independent, Visit visit) const {
-    const auto entries = [](const std::vector<std::uint32_t>& of, std::uint32_t begin,
-                            std::uint32_t end) {
-      return std::span<const std::uint32_t>(of.data() + begin, end - begin);
+    const auto entries = [this](std::uint32_t begin, std::uint32_t end) {
+      return std::span<const std::uint32_t>(order_.data() + begin, end - begin);
     };
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
       // In order, the tasks of a block follow one another in order_: one loop over them all.
@@ -130,7 +129,7 @@ class ContactBatches {
         const std::uint32_t end = task_end_[t];
         if (visit.by_levels && levelled(t)) {
           for (std::uint32_t l = levels_of_[t].first, level = begin; l < levels_of_[t].last; ++l) {
-            largest = std::max(largest, solve_independent(entries(order_, level, level_end_[l])));
+            largest = std::max(largest, solve_independent(entries(level, level_end_[l])));
             level = level_end_[l];
           }
           continue;
@@ -150,7 +149,7 @@ class ContactBatches {
     // A colour's tasks are one contact each, one after the other in order_.
     const auto colour_tasks = [&](std::size_t first, std::size_t last, double largest) {
       const std::uint32_t begin = first == 0 ? 0 : task_end_[first - 1];
-      return std::max(largest, solve_independent(entries(order_, begin, task_end_[last - 1])));
+      return std::max(largest, solve_independent(entries(begin, task_end_[last - 1])));
     };
     const bool alone = one_thread();
     double largest = 0.0;

@@ -55,14 +55,14 @@ struct FourBodies {
 
 // The bodies `ids` of state `s`, a lane each, with their inverse mass and moment.
 [[gnu::target("avx2")]] inline FourBodies gather_bodies(const std::array<BodyId, 4>& ids,
-                                                        Four inverse_mass, Four inverse_moment,
+                                                        const BodyInertia& inertia,
                                                         const MotionState& s) {
   FourBodies body;
   split(s.velocity[ids[0]], s.velocity[ids[1]], s.velocity[ids[2]], s.velocity[ids[3]],
         body.velocity_x, body.velocity_y);
   body.angular_velocity = gather(s.angular_velocity.data(), ids);
-  body.inverse_mass = inverse_mass;
-  body.inverse_moment = inverse_moment;
+  body.inverse_mass = gather(inertia.inverse_mass.data(), ids);
+  body.inverse_moment = gather(inertia.inverse_moment.data(), ids);
   return body;
 }
 
@@ -169,10 +169,7 @@ struct FourDirections {
   // contact_tangent: (−n_y, n_x).
   const FourDirections tangent{_mm256_xor_pd(ny, _mm256_set1_pd(-0.0)), nx, mass_and_arms.field[3],
                                tangent_arm_b};
-  FourPairs m{gather_bodies(four.a, gather(inertia.inverse_mass.data(), four.a),
-                            gather(inertia.inverse_moment.data(), four.a), s),
-              gather_bodies(four.b, gather(inertia.inverse_mass.data(), four.b),
-                            gather(inertia.inverse_moment.data(), four.b), s)};
+  FourPairs m{gather_bodies(four.a, inertia, s), gather_bodies(four.b, inertia, s)};
 
   const Four zero = _mm256_setzero_pd();
   // Not idle (solve_contact's idle): an impulse already, or a point closing faster than its target.
