@@ -78,9 +78,14 @@ bool LocalImpacts::in_solver(const StepContext& ctx, std::uint32_t shape) const 
 bool LocalImpacts::engaged(const StepContext& ctx, const Contact& c) const {
   const MotionState& s = ctx.start;
   const double h = ctx.h;
+  const double slop = ctx.settings.linear_slop;
+  // Touching is told by the depth alone: a resting pile's points need no velocity.
+  for (const ContactPointState& p : ctx.contacts.points(c)) {
+    if (p.depth > -slop) return true;
+  }
   for (const ContactPointState& p : ctx.contacts.points(c)) {
     const double closing = -contact_normal_velocity(s, c, p) * h;  // m
-    if (p.depth + std::max(closing, 0.0) > -ctx.settings.linear_slop) return true;
+    if (p.depth + std::max(closing, 0.0) > -slop) return true;
   }
   return false;
 }
@@ -95,8 +100,13 @@ void LocalImpacts::hand_over(StepContext& ctx) {
   const auto join = [this, &ctx](BodyId b) {
     if (ctx.dynamic[b]) roles_[b] = BodyRole::kInSolver;
   };
+  // A contact whose dynamic bodies have already joined adds nothing: no need to ask if it is
+  // engaged (most of a pile's contacts).
+  const auto joined = [this, &ctx](BodyId b) {
+    return !ctx.dynamic[b] || roles_[b] == BodyRole::kInSolver;
+  };
   for (const Contact& c : ctx.contacts) {
-    if (!engaged(ctx, c)) continue;
+    if ((joined(c.body_a) && joined(c.body_b)) || !engaged(ctx, c)) continue;
     join(c.body_a);
     join(c.body_b);
   }
