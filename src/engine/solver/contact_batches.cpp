@@ -40,6 +40,7 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   level_end_.clear();
   levels_of_.clear();
   body_scratch_.assign(bodies, 0);
+  level_base_ = 0;
   for (std::size_t r = 0; r < bodies; ++r) {
     const std::uint32_t start = islands_.island_start[r];
     const std::uint32_t end = islands_.island_end[r];
@@ -57,7 +58,10 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   part(contacts, inertia, positions, splitting.parted_above);
   first_colour_stage_ = stage_end_.size();
   // The parts' tasks, placed from a copy of their contacts (part leaves room for all of them).
-  if (levels_of_.size() < task_end_.size()) body_scratch_.assign(bodies, 0);
+  if (levels_of_.size() < task_end_.size()) {
+    body_scratch_.assign(bodies, 0);
+    level_base_ = 0;
+  }
   while (levels_of_.size() < task_end_.size()) {
     const std::size_t t = levels_of_.size();
     const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
@@ -259,37 +263,37 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
 void ContactBatches::place_task(const ContactSet& contacts, std::span<const std::uint32_t> task) {
   const std::size_t t = levels_of_.size();
   const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
-  const auto levelled = std::all_of(task.begin(), task.end(),
-                                    [&](std::uint32_t i) { return contacts[i].count() == 1; });
+  const auto first = static_cast<std::uint32_t>(level_end_.size());
+  // A contact's level, from 1, as its bodies' last contacts left them; its bodies then take it.
+  // Bodies keep their levels above level_base_, which each pass raises past the levels it gave
+  // out: no pass over the task to clear them.
+  const auto level_of = [&](const Contact& c) {
+    const bool a = movable_[c.body_a] != 0;
+    const bool b = movable_[c.body_b] != 0;
+    const std::uint32_t level = 1 + std::max({level_base_, a ? body_scratch_[c.body_a] : 0,
+                                              b ? body_scratch_[c.body_b] : 0});
+    if (a) body_scratch_[c.body_a] = level;
+    if (b) body_scratch_[c.body_b] = level;
+    return level - level_base_;
+  };
+  // The levels are found twice, to count each level's contacts and then to place them: a second
+  // pass over the task costs less than the room for each contact's level.
+  bool levelled = true;
+  for (const std::uint32_t i : task) {
+    const Contact& c = contacts[i];
+    levelled = c.count() == 1;
+    if (!levelled) break;
+    const std::uint32_t level = level_of(c);
+    if (first + level > level_end_.size()) append(level_end_, 0);
+    ++level_end_[first + level - 1];
+  }
+  level_base_ += static_cast<std::uint32_t>(level_end_.size() - first);
   if (!levelled) {
+    level_end_.resize(first);
     std::copy(task.begin(), task.end(), order_.begin() + begin);
     append(levels_of_, {});
     return;
   }
-  // A contact's level, from 1, as its bodies' last contacts left them; its bodies then take it.
-  const auto level_of = [&](std::uint32_t i) {
-    const Contact& c = contacts[i];
-    const bool a = movable_[c.body_a] != 0;
-    const bool b = movable_[c.body_b] != 0;
-    const std::uint32_t level =
-        1 + std::max(a ? body_scratch_[c.body_a] : 0, b ? body_scratch_[c.body_b] : 0);
-    if (a) body_scratch_[c.body_a] = level;
-    if (b) body_scratch_[c.body_b] = level;
-    return level;
-  };
-  const auto forget = [&] {
-    for (const std::uint32_t i : task)
-      body_scratch_[contacts[i].body_a] = body_scratch_[contacts[i].body_b] = 0;
-  };
-  // The levels are found twice, to count each level's contacts and then to place them: a second
-  // pass over the task costs less than the room for each contact's level.
-  const auto first = static_cast<std::uint32_t>(level_end_.size());
-  for (const std::uint32_t i : task) {
-    const std::uint32_t level = level_of(i);
-    if (first + level > level_end_.size()) append(level_end_, 0);
-    ++level_end_[first + level - 1];
-  }
-  forget();
   // Each level's count into where it starts, and, as its contacts are placed, where it ends.
   std::uint32_t start = begin;
   for (std::size_t l = first; l < level_end_.size(); ++l) {
@@ -297,8 +301,8 @@ void ContactBatches::place_task(const ContactSet& contacts, std::span<const std:
     level_end_[l] = start;
     start += count;
   }
-  for (const std::uint32_t i : task) order_[level_end_[first + level_of(i) - 1]++] = i;
-  forget();
+  for (const std::uint32_t i : task) order_[level_end_[first + level_of(contacts[i]) - 1]++] = i;
+  level_base_ += static_cast<std::uint32_t>(level_end_.size() - first);
   append(levels_of_, {first, static_cast<std::uint32_t>(level_end_.size())});
 }
 

@@ -214,6 +214,7 @@ class ContactBatches {
   // contact of a cut island; then a part's contacts, while they are placed.
   std::vector<std::uint32_t> body_scratch_;
   std::vector<std::uint32_t> contact_scratch_;
+  std::uint32_t level_base_ = 0;            // while levelling: body levels up to this count as none
   std::vector<std::uint32_t> group_start_;  // per group: its first entry in order_
   std::vector<std::uint64_t> colours_;      // per body: the colours its contacts took, as bits
   std::vector<std::uint8_t> bucket_;        // per contact of a large island: its colour's bucket
