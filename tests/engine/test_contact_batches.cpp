@@ -3,6 +3,7 @@
 // bodies.
 
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <limits>
@@ -176,6 +177,46 @@ TEST_CASE("A large island is visited colour after colour, no colour sharing a mo
   for (std::uint32_t i = 2; i < g.contacts.size(); i += 2) expected.push_back(i);
   for (std::uint32_t i = 1; i < g.contacts.size(); i += 2) expected.push_back(i);
   CHECK(order == expected);
+}
+
+TEST_CASE("Contacts handed over at once have their one-point contacts first") {
+  // A coloured chain whose every third link has two points, on one and two threads: each span
+  // the pass hands over holds a run of one-point contacts, then only two-point ones.
+  const std::size_t n = kColouredAbove + 100;
+  Graph g(n + 1, {});
+  for (gp::BodyId b = 1; b <= n; ++b) {
+    gp::Contact& c = g.contacts.append(b % 3 == 0 ? 2 : 1);
+    c.body_a = c.shape_a = b - 1;
+    c.body_b = c.shape_b = b;
+  }
+  gp::ContactBatches batches;
+  batches.build(g.contacts, {}, g.inertia, g.positions, {0, kColouredAbove});
+  for (const int threads : {1, 2}) {
+    std::atomic<int> spans = 0, mixed = 0, unordered = 0;
+    tbb::task_arena(threads).execute([&] {
+      batches.run([](std::uint32_t) { return 0.0; },
+                  [&](std::span<const std::uint32_t> independent) {
+                    const auto one_point = [&](std::uint32_t i) {
+                      return g.contacts[i].count() == 1;
+                    };
+                    ++spans;
+                    if (!std::all_of(independent.begin(), independent.end(), one_point) &&
+                        std::any_of(independent.begin(), independent.end(), one_point)) {
+                      ++mixed;
+                    }
+                    if (!std::is_partitioned(independent.begin(), independent.end(), one_point)) {
+                      ++unordered;
+                    }
+                    return 0.0;
+                  },
+                  Visit{.by_levels = true});
+    });
+    INFO(threads << " threads");
+    // Spans holding both kinds exist, so that the order within them is tested.
+    CHECK(spans >= 2);
+    CHECK(mixed > 0);
+    CHECK(unordered == 0);
+  }
 }
 
 TEST_CASE("The passes' largest value is the same on any number of threads") {

@@ -111,7 +111,7 @@ class ContactBatches {
   /// The same, a task's contacts visited as `visit` says, but contacts that share no movable body
   /// (a colour's, a block at a time, and a level's) go to `solve_independent(contact indices)`,
   /// which returns the largest value over them: they may be solved in any order, or several at
-  /// once, with the same result.
+  /// once, with the same result. Their one-point contacts come first.
   template <typename Solve, typename SolveIndependent>
   double run(const Solve& solve, const SolveIndependent& solve_independent, Visit visit) const {
     const auto entries = [this](std::uint32_t begin, std::uint32_t end) {
