@@ -171,24 +171,23 @@ Vec2 anchor_arm(AnchorKind kind, const ShapeRecord& shape, const Arm& deepest, c
 template <typename Solve>
 double correct_independent(const ContactSet& contacts, std::span<const std::uint32_t> independent,
                            const Solve& solve, const DiscPositionInput& in, MotionState& s) {
-  constexpr std::size_t kBlock = 128;
-  std::array<std::uint32_t, kBlock> discs;
-  double deep = 0.0;
-  std::size_t held = 0;
-  const auto correct_held = [&] {
-    if (correct_centred_discs(contacts, std::span(discs).first(held), in, s)) deep = 1.0;
-    held = 0;
-  };
-  for (const std::uint32_t i : independent) {
+  const auto centred = [&](std::uint32_t i) {
     const Contact& c = contacts[i];
-    if (c.count() != 1 || !centred_discs(contacts.points(c)[0])) {
-      deep = std::max(deep, solve(i));
+    return c.count() == 1 && centred_discs(contacts.points(c)[0]);
+  };
+  double deep = 0.0;
+  // Runs of contacts between centred discs, each handed over where it lies, and the others.
+  for (std::size_t done = 0; done < independent.size();) {
+    std::size_t run = 0;
+    while (done + run < independent.size() && centred(independent[done + run])) ++run;
+    if (run > 0) {
+      if (correct_centred_discs(contacts, independent.subspan(done, run), in, s)) deep = 1.0;
+      done += run;
       continue;
     }
-    discs[held++] = i;
-    if (held == kBlock) correct_held();
+    deep = std::max(deep, solve(independent[done]));
+    ++done;
   }
-  correct_held();
   return deep;
 }
 
