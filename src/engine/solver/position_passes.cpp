@@ -1,7 +1,6 @@
 #include "engine/solver/position_passes.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <span>

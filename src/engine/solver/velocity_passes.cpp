@@ -1,7 +1,6 @@
 #include "engine/solver/velocity_passes.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <span>
 
