@@ -39,8 +39,13 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   bool any_coloured = false;
   level_end_.clear();
   levels_of_.clear();
-  body_scratch_.assign(bodies, 0);
-  level_base_ = 0;
+  // Levelling starts from bodies without levels: before the islands not cut, and again before the
+  // parts, as parting leaves its codes in the body scratch.
+  const auto start_levelling = [this, bodies] {
+    body_scratch_.assign(bodies, 0);
+    level_base_ = 0;
+  };
+  start_levelling();
   for (std::size_t r = 0; r < bodies; ++r) {
     const std::uint32_t start = islands_.island_start[r];
     const std::uint32_t end = islands_.island_end[r];
@@ -58,10 +63,7 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   part(contacts, inertia, positions, splitting.parted_above);
   first_colour_stage_ = stage_end_.size();
   // The parts' tasks, placed from a copy of their contacts (part leaves room for all of them).
-  if (levels_of_.size() < task_end_.size()) {
-    body_scratch_.assign(bodies, 0);
-    level_base_ = 0;
-  }
+  if (levels_of_.size() < task_end_.size()) start_levelling();
   while (levels_of_.size() < task_end_.size()) {
     const std::size_t t = levels_of_.size();
     const std::uint32_t begin = t == 0 ? 0 : task_end_[t - 1];
