@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <span>
 #include <type_traits>
@@ -190,6 +191,22 @@ double correct_independent(const ContactSet& contacts, std::span<const std::uint
   return deep;
 }
 
+// Where a position pass finds a contact point: the separation [m] along the normal, now, of
+// each body's deepest point inside the other at detection, the arms [m] from the bodies' centres
+// of mass to those points, and the excess overlap it removes (0: none, and then nothing else is
+// set).
+struct PointOverlap {
+  double excess = 0.0;
+  double separation = 0.0;
+  Vec2 arm_a;
+  Vec2 arm_b;
+};
+
+// Contacts a thread scans at a time for an excess overlap (a few nanoseconds each, a task about
+// a microsecond to hand out), and how many make it worth sharing out.
+constexpr std::size_t kScannedContactsPerTask = 4096;
+constexpr std::size_t kParallelScannedContacts = 16384;
+
 }  // namespace
 
 template <typename Order>
@@ -206,45 +223,75 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   constexpr double kMaxCorrection = 0.2;  // m per pass, so a deep overlap is not flung apart
   const auto turn = [&](BodyId b) { return s.angle[b] - detected.angle[b]; };
   rotations.reset(inertia, s, turn);
-  const auto turned_with = [&](BodyId b) {
+  // `moved` is how far c's bodies moved, `turned_with(b)` turns a vector with body b since
+  // detection.
+  const auto overlap_at = [&](const Contact& c, const ContactPointState& p,
+                              const MovedSinceDetection& moved, const auto& turned_with) {
+    PointOverlap o;
+    // Every point of a pile at rest is passed over here, where placing its anchors took 12% of
+    // the pile's step.
+    if (const double room = slop - static_cast<double>(p.depth);
+        room > 0.0 && moved.within_slop(p, room)) {
+      return o;
+    }
+    // Each body's deepest point inside the other at detection, half the depth from the contact
+    // point.
+    const double half_depth = 0.5 * p.depth;
+    o.arm_a = anchor_arm(
+        p.anchor_a, shapes[c.shape_a],
+        [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
+        half_depth - p.tangent_arm_a, turned_with(c.body_a));
+    o.arm_b = anchor_arm(
+        p.anchor_b, shapes[c.shape_b],
+        [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
+        p.tangent_arm_b + half_depth, turned_with(c.body_b));
+    o.separation = (s.position[c.body_a] + o.arm_a - s.position[c.body_b] - o.arm_b).dot(c.normal);
+    o.excess = std::clamp(kBaumgarte * (o.separation + slop), -kMaxCorrection, 0.0);
+    return o;
+  };
+  // A pass moves no body when every point is within the slop (a resting pile's at nearly every
+  // step), and that ends the passes. Told by a scan of the contacts in the order they are kept,
+  // which reads them one after the other rather than by colours or levels; it reads the rotations
+  // without keeping them, as contacts scanned on different threads at once may share a body.
+  const auto unkept_turn = [&](BodyId b) {
+    return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate_unkept(b, turn(b), v); };
+  };
+  const auto any_excess = [&](std::size_t first, std::size_t last, bool any) {
+    for (std::size_t i = first; i < last && !any; ++i) {
+      const Contact& c = contacts[i];
+      const MovedSinceDetection moved(c, s, detected);
+      for (const ContactPointState& p : contacts.points(c)) {
+        any = any || overlap_at(c, p, moved, unkept_turn).excess != 0.0;
+      }
+    }
+    return any;
+  };
+  if (!reduce_blocks(contacts.size(), kScannedContactsPerTask,
+                     contacts.size() < kParallelScannedContacts, false, any_excess,
+                     std::logical_or<>())) {
+    return;
+  }
+  const auto kept_turn = [&](BodyId b) {
     return [&rotations, &turn, b](const Vec2& v) { return rotations.rotate(b, turn(b), v); };
   };
   const auto solve = [&](std::uint32_t i) {
     const Contact& c = contacts[i];
     bool contact_deep = false;
     for (const ContactPointState& p : contacts.points(c)) {
-      // Every point of a pile at rest is passed over here, where placing its anchors took 12%
-      // of the pile's step.
-      if (const double room = slop - static_cast<double>(p.depth);
-          room > 0.0 && MovedSinceDetection(c, s, detected).within_slop(p, room)) {
-        continue;
-      }
-      // Each body's deepest point inside the other at detection, half the depth from the
-      // contact point.
-      const double half_depth = 0.5 * p.depth;
-      const Vec2 arm_a = anchor_arm(
-          p.anchor_a, shapes[c.shape_a],
-          [&]() -> Vec2 { return gp::arm_a(c, p) - half_depth * c.normal; }, -c.normal,
-          half_depth - p.tangent_arm_a, turned_with(c.body_a));
-      const Vec2 arm_b = anchor_arm(
-          p.anchor_b, shapes[c.shape_b],
-          [&]() -> Vec2 { return gp::arm_b(c, p) + half_depth * c.normal; }, c.normal,
-          p.tangent_arm_b + half_depth, turned_with(c.body_b));
-      const double separation =
-          (s.position[c.body_a] + arm_a - s.position[c.body_b] - arm_b).dot(c.normal);
-      const double excess = std::clamp(kBaumgarte * (separation + slop), -kMaxCorrection, 0.0);
-      if (excess == 0.0) continue;
-      contact_deep = contact_deep || separation < -2.0 * slop;
+      // Anew at each point: the last point's correction moved the bodies.
+      const PointOverlap o = overlap_at(c, p, MovedSinceDetection(c, s, detected), kept_turn);
+      if (o.excess == 0.0) continue;
+      contact_deep = contact_deep || o.separation < -2.0 * slop;
       // The impulses' effective mass, applied to a displacement instead of a velocity; set up
       // for the step's arms, which the small turns of these passes barely change.
-      const Vec2 shift = -excess * p.normal_mass * c.normal;
+      const Vec2 shift = -o.excess * p.normal_mass * c.normal;
       // A push along the normal through a disc's centre does not turn it: zero exactly, not
       // by round-off, so that nothing turns it and its rotation is not looked up.
       const auto moment = [&](AnchorKind kind, const Vec2& arm, const Vec2& push) {
         return kind == AnchorKind::kCentredDisc ? 0.0 : dd::torque(arm, push);
       };
-      const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, arm_a, shift),
-                                   moment(p.anchor_b, arm_b, tm::reaction_force(shift)), s);
+      const Turns turns = displace(inertia, c, shift, moment(p.anchor_a, o.arm_a, shift),
+                                   moment(p.anchor_b, o.arm_b, tm::reaction_force(shift)), s);
       rotations.turn(c.body_a, turn(c.body_a), turns.a);
       rotations.turn(c.body_b, turn(c.body_b), turns.b);
     }

@@ -88,13 +88,21 @@ class RotationCache {
     if (angle_[body] != angle) place(body, angle);
     return rotation_[body].rotate(v);
   }
+  /// The same, the rotation computed but not kept if it is not already: for threads that may
+  /// read the same body at once.
+  Vec2 rotate_unkept(BodyId body, double angle, const Vec2& v) const {
+    return (angle_[body] == angle ? rotation_[body] : rotation_by(angle)).rotate(v);
+  }
 
  private:
+  // A body that has not turned (every static one) needs no trigonometry: cos(+0) and sin(+0) are
+  // 1 and +0, the identity's.
+  static Rotation rotation_by(double angle) {
+    return angle == 0.0 && !std::signbit(angle) ? Rotation() : Rotation(angle);
+  }
   void place(BodyId body, double angle) {
     angle_[body] = angle;
-    // A body that has not turned (every static one) needs no trigonometry: cos(+0) and sin(+0)
-    // are 1 and +0, the identity's.
-    rotation_[body] = angle == 0.0 && !std::signbit(angle) ? Rotation() : Rotation(angle);
+    rotation_[body] = rotation_by(angle);
   }
   // Bodies a thread resets at a time (a few nanoseconds each, a task about a microsecond to hand
   // out), and how many make it worth sharing out.
