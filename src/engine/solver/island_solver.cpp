@@ -133,9 +133,25 @@ bool may_be_uneven(const ContactIslands& islands, std::size_t root,
   return islands.points[root] <= limits.uneven_points;
 }
 
+// Whether `body` is not movable or slower than the resting speeds of `limits` in `start`.
+bool resting_body(const BodyInertia& inertia, const MotionState& start,
+                  const DirectSolveLimits& limits, BodyId body) {
+  return !movable(inertia, body) ||
+         (start.velocity[body].norm() < limits.resting_speed &&
+          std::abs(start.angular_velocity[body]) < limits.resting_angular_speed);
+}
+
+// The bodies as the surveys read them: as solve_small_islands is given them, whether each rests
+// (resting_body), and their state now.
+struct SurveyedBodies {
+  const IslandBodies& bodies;
+  std::span<const std::uint8_t> resting;
+  const MotionState& now;
+};
+
 IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-                    const IslandBodies& bodies, const MotionState& s,
-                    const DirectSolveLimits& limits) {
+                    const SurveyedBodies& surveyed, const DirectSolveLimits& limits) {
+  const IslandBodies& bodies = surveyed.bodies;
   // The masses are compared only where an uneven island may be solved: a large resting pile's
   // survey runs at every step.
   const bool weigh = may_be_uneven(islands, root, limits);
@@ -149,24 +165,24 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
   const std::size_t count = islands.island_end[root] - first;
   const auto walk = [&](std::size_t from, std::size_t to, Found found) {
     for (std::size_t e = first + from; e < first + to; ++e) {
+      // Neither at rest nor weighed: nothing further can change what the survey finds.
+      if (!found.at_rest && !weigh) break;
       const Contact& c = contacts[islands.order[e]];
       for (const BodyId b : {c.body_a, c.body_b}) {
-        if (!movable(bodies.inertia, b)) continue;
+        found.at_rest = found.at_rest && surveyed.resting[b] != 0;
         const double inverse_mass = bodies.inertia.inverse_mass[b];
-        if (weigh && inverse_mass > 0.0) {
+        if (weigh && movable(bodies.inertia, b) && inverse_mass > 0.0) {
           found.lightest = std::max(found.lightest, inverse_mass);
           found.heaviest = std::min(found.heaviest, inverse_mass);
         }
-        found.at_rest = found.at_rest && bodies.start.velocity[b].norm() < limits.resting_speed &&
-                        std::abs(bodies.start.angular_velocity[b]) < limits.resting_angular_speed;
       }
       for (const ContactPointState& p : contacts.points(c)) {
         // Bodies overlapping by more than the position passes leave are about to be moved apart:
         // impulses solved exactly for where they are would not fit where they go.
         found.at_rest = found.at_rest && p.depth <= limits.resting_depth;
-        found.held = found.held && (!found.at_rest ||
-                                    contact_normal_velocity(s, c, p) - p.target_normal_velocity >=
-                                        -limits.unheld_speed);
+        found.held = found.held && (!found.at_rest || contact_normal_velocity(surveyed.now, c, p) -
+                                                              p.target_normal_velocity >=
+                                                          -limits.unheld_speed);
       }
     }
     return found;
@@ -201,18 +217,26 @@ void release_large(IslandScratch& scratch) {
 // Why an island is solved this step.
 enum class Reason { kNone, kSmall, kUneven, kResting };
 
+// Whether the island of `root` is surveyed (reason_to_solve): too large to be solved for its size
+// alone, small enough to be solved for its uneven masses or at rest.
+bool island_surveyed(const ContactIslands& islands, std::size_t root,
+                     const DirectSolveLimits& limits) {
+  const std::size_t points = islands.points[root];
+  return points > limits.points &&
+         (may_be_uneven(islands, root, limits) || points <= limits.resting_points);
+}
+
 // A resting island whose warm start holds it is left to the passes, which then settle it in a
 // pass or two; a solve costs as much as hundreds of them.
 Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-                       const IslandBodies& bodies, const MotionState& s,
-                       const DirectSolveLimits& limits) {
+                       const SurveyedBodies& bodies, const DirectSolveLimits& limits) {
   const std::size_t points = islands.points[root];
   if (points == 0) return Reason::kNone;
   if (points <= limits.points) return Reason::kSmall;
+  if (!island_surveyed(islands, root, limits)) return Reason::kNone;
   const bool uneven_allowed = may_be_uneven(islands, root, limits);
   const bool may_rest = points <= limits.resting_points;
-  if (!uneven_allowed && !may_rest) return Reason::kNone;
-  const IslandSurvey found = survey(contacts, islands, root, bodies, s, limits);
+  const IslandSurvey found = survey(contacts, islands, root, bodies, limits);
   if (uneven_allowed && found.uneven) return Reason::kUneven;
   if (may_rest && found.at_rest && !found.held) return Reason::kResting;
   return Reason::kNone;
@@ -298,6 +322,8 @@ struct Tally {
 // roots: a task costs about a microsecond to hand out, as much as a small island's solve.
 constexpr std::size_t kParallelBodies = 4096;
 constexpr std::size_t kRootsPerTask = 64;
+// Bodies a task tells at rest at a time: a body costs a nanosecond or two.
+constexpr std::size_t kRestingBodiesPerTask = 8192;
 
 }  // namespace
 
@@ -310,10 +336,25 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
     --scratch.resting_pause;
     active.resting_points = 0;
   }
+  const std::size_t body_count = bodies.inertia.inverse_mass.size();
+  // A body is in as many contacts as it touches shapes: told at rest once, rather than at each.
+  scratch.resting.clear();
+  for (std::size_t r = 0; r < body_count; ++r) {
+    if (!island_surveyed(islands, r, active)) continue;
+    scratch.resting.resize(body_count);
+    for_blocks(body_count, kRestingBodiesPerTask, body_count < kParallelBodies,
+               [&](std::size_t first, std::size_t last) {
+                 for (auto b = static_cast<BodyId>(first); b < last; ++b) {
+                   scratch.resting[b] = resting_body(bodies.inertia, bodies.start, active, b);
+                 }
+               });
+    break;
+  }
+  const SurveyedBodies surveyed_bodies{bodies, scratch.resting, s};
   const auto solve_roots = [&](std::size_t first, std::size_t last, Tally tally) {
     IslandScratch& room = scratch.per_thread.local();
     for (std::size_t r = first; r < last; ++r) {
-      const Reason reason = reason_to_solve(contacts, islands, r, bodies, s, active);
+      const Reason reason = reason_to_solve(contacts, islands, r, surveyed_bodies, active);
       if (reason == Reason::kNone) continue;
       list_points(contacts, islands, r, bodies.inertia, room);
       // An island let in by its uneven masses, which sequential impulses cannot hold up, is
@@ -338,7 +379,6 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
     }
     return tally;
   };
-  const std::size_t body_count = bodies.inertia.inverse_mass.size();
   const Tally tally =
       reduce_blocks(body_count, kRootsPerTask, body_count < kParallelBodies, Tally{}, solve_roots,
                     [](Tally a, Tally b) {

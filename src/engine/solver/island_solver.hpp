@@ -69,6 +69,9 @@ void assemble_sparse(const ContactSet& contacts, const BodyInertia& inertia,
 /// last.
 struct DirectSolveScratch {
   tbb::enumerable_thread_specific<IslandScratch> per_thread;
+  // Per body, of a step whose islands are surveyed: 1 where it is slower than the resting speeds
+  // at the start of the step or not movable, else 0.
+  std::vector<std::uint8_t> resting;
   // Calls of solve_small_islands left in which no resting island is solved, after a resting
   // island's solve did not settle.
   int resting_pause = 0;
