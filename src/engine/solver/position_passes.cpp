@@ -202,10 +202,9 @@ struct PointOverlap {
   Vec2 arm_b;
 };
 
-// Contacts a thread scans at a time for an excess overlap (a few nanoseconds each, a task about
-// a microsecond to hand out), and how many make it worth sharing out.
+// Contacts a thread scans at a time for an excess overlap: a few nanoseconds each, a task about
+// a microsecond to hand out.
 constexpr std::size_t kScannedContactsPerTask = 4096;
-constexpr std::size_t kParallelScannedContacts = 16384;
 
 }  // namespace
 
@@ -267,7 +266,7 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
     return any;
   };
   if (!reduce_blocks(contacts.size(), kScannedContactsPerTask,
-                     contacts.size() < kParallelScannedContacts, false, any_excess,
+                     contacts.size() < 2 * kScannedContactsPerTask, false, any_excess,
                      std::logical_or<>())) {
     return;
   }
