@@ -93,8 +93,15 @@ Contact& ContactSet::place(const ContactSlot& slot) {
   c.friction = 0.0;
   c.first_point = slot.first_point;
   c.block = slot.block;
-  for (ContactPointState& p : points(c)) p = ContactPointState{};
-  if (c.block != Contact::kNoBlock) blocks_[c.block] = NormalBlock{};
+  // A point at a time, each of a size known when compiled, so that it is cleared by stores in
+  // place: cleared as a run of points of either size, by a call to memset, the narrowphase of a
+  // box pile took a sixth longer.
+  ContactPointState* const first = points_.data() + c.first_point;
+  first[0] = ContactPointState{};
+  if (c.count() == 2) {
+    first[1] = ContactPointState{};
+    blocks_[c.block] = NormalBlock{};
+  }
   if (keeps_bounces_) std::ranges::fill(bounce_velocities(c), 0.0);
   return c;
 }
