@@ -229,14 +229,14 @@ bool island_surveyed(const ContactIslands& islands, std::size_t root,
 // A resting island whose warm start holds it is left to the passes, which then settle it in a
 // pass or two; a solve costs as much as hundreds of them.
 Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-                       const SurveyedBodies& bodies, const DirectSolveLimits& limits) {
+                       const SurveyedBodies& surveyed, const DirectSolveLimits& limits) {
   const std::size_t points = islands.points[root];
   if (points == 0) return Reason::kNone;
   if (points <= limits.points) return Reason::kSmall;
   if (!island_surveyed(islands, root, limits)) return Reason::kNone;
   const bool uneven_allowed = may_be_uneven(islands, root, limits);
   const bool may_rest = points <= limits.resting_points;
-  const IslandSurvey found = survey(contacts, islands, root, bodies, limits);
+  const IslandSurvey found = survey(contacts, islands, root, surveyed, limits);
   if (uneven_allowed && found.uneven) return Reason::kUneven;
   if (may_rest && found.at_rest && !found.held) return Reason::kResting;
   return Reason::kNone;
