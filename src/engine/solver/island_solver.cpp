@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ranges>
 
 #include "engine/threads.hpp"
 
@@ -171,7 +172,7 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
       for (const BodyId b : {c.body_a, c.body_b}) {
         found.at_rest = found.at_rest && surveyed.resting[b] != 0;
         const double inverse_mass = bodies.inertia.inverse_mass[b];
-        if (weigh && movable(bodies.inertia, b) && inverse_mass > 0.0) {
+        if (weigh && inverse_mass > 0.0) {
           found.lightest = std::max(found.lightest, inverse_mass);
           found.heaviest = std::min(found.heaviest, inverse_mass);
         }
@@ -339,8 +340,8 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   const std::size_t body_count = bodies.inertia.inverse_mass.size();
   // A body is in as many contacts as it touches shapes: told at rest once, rather than at each.
   scratch.resting.clear();
-  for (std::size_t r = 0; r < body_count; ++r) {
-    if (!island_surveyed(islands, r, active)) continue;
+  if (std::ranges::any_of(std::views::iota(std::size_t{0}, body_count),
+                          [&](std::size_t r) { return island_surveyed(islands, r, active); })) {
     scratch.resting.resize(body_count);
     for_blocks(body_count, kRestingBodiesPerTask, body_count < kParallelBodies,
                [&](std::size_t first, std::size_t last) {
@@ -348,7 +349,6 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
                    scratch.resting[b] = resting_body(bodies.inertia, bodies.start, active, b);
                  }
                });
-    break;
   }
   const SurveyedBodies surveyed_bodies{bodies, scratch.resting, s};
   const auto solve_roots = [&](std::size_t first, std::size_t last, Tally tally) {
