@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <ranges>
 
 #include "engine/threads.hpp"
 
@@ -339,9 +338,14 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   }
   const std::size_t body_count = bodies.inertia.inverse_mass.size();
   // A body is in as many contacts as it touches shapes: told at rest once, rather than at each.
+  const auto any_surveyed = [&] {
+    for (std::size_t r = 0; r < body_count; ++r) {
+      if (island_surveyed(islands, r, active)) return true;
+    }
+    return false;
+  };
   scratch.resting.clear();
-  if (std::ranges::any_of(std::views::iota(std::size_t{0}, body_count),
-                          [&](std::size_t r) { return island_surveyed(islands, r, active); })) {
+  if (any_surveyed()) {
     scratch.resting.resize(body_count);
     for_blocks(body_count, kRestingBodiesPerTask, body_count < kParallelBodies,
                [&](std::size_t first, std::size_t last) {
