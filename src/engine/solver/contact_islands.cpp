@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "engine/capacity.hpp"
+
 namespace gp {
 
 void ContactIslands::find(const ContactSet& contacts, const BodyInertia& inertia) {
@@ -32,7 +34,9 @@ void ContactIslands::find(const ContactSet& contacts, const BodyInertia& inertia
     ++counts[r];
   }
   std::uint32_t next = 0;
-  for (std::size_t r = 0; r < bodies; ++r) {
+  roots.clear();
+  for (BodyId r = 0; r < bodies; ++r) {
+    if (counts[r] > 0) append(roots, r);
     island_start[r] = next;
     next += counts[r];
     counts[r] = island_start[r];

@@ -32,6 +32,7 @@ struct ContactIslands {
   std::vector<std::uint32_t> order;         ///< contact indices, grouped by island
   std::vector<std::uint32_t> island_start;  ///< per root: its first entry in `order`
   std::vector<std::uint32_t> island_end;    ///< per root: one past its last entry in `order`
+  std::vector<BodyId> roots;                ///< the roots of islands with contacts, ascending
 
   /// Groups `contacts` by island, reusing the arrays' room.
   void find(const ContactSet& contacts, const BodyInertia& inertia);
