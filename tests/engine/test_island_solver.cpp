@@ -41,6 +41,19 @@ gp::BodyDef unit_box(const std::string& name, const Vec2& position, double densi
   return box;
 }
 
+// `count` unit boxes of 1 kg in a row along x from the origin, touching, the first moving at
+// `velocity` [m/s] and turning at `angular_velocity` [rad/s].
+void add_row(gp::Space& space, int count, const Vec2& velocity, double angular_velocity = 0.0) {
+  for (int i = 0; i < count; ++i) {
+    gp::BodyDef box = unit_box("box" + std::to_string(i), {static_cast<double>(i), 0.0}, 1.0);
+    if (i == 0) {
+      box.velocity = velocity;
+      box.angular_velocity = angular_velocity;
+    }
+    space.add_body(box);
+  }
+}
+
 // Ten unit boxes on the ground, their densities growing geometrically from 1 to 100 upwards.
 std::unique_ptr<gp::Space> heavy_topped_column(gp::Settings settings) {
   settings.gravity = {0.0, -kGravity};
@@ -228,11 +241,7 @@ TEST_CASE("A row of 40 boxes nudged without gravity is solved at rest and moves 
   gp::Space space(settings);
   constexpr int kBoxes = 40;
   constexpr double kNudge = 0.005;  // m/s
-  for (int i = 0; i < kBoxes; ++i) {
-    gp::BodyDef box = unit_box("box" + std::to_string(i), {static_cast<double>(i), 0.0}, 1.0);
-    if (i == 0) box.velocity = {kNudge, 0.0};
-    space.add_body(box);
-  }
+  add_row(space, kBoxes, {kNudge, 0.0});
   space.step(kStep);
   for (gp::BodyId id = 0; id < kBoxes; ++id) {
     // The compliance of 1e-10 lets each contact yield a little: measured 1.5e-11 m/s at most.
@@ -255,14 +264,7 @@ TEST_CASE(
     settings.gravity = Vec2::Zero();
     settings.direct_solve_resting_points = resting_points;
     gp::Space space(settings);
-    for (int i = 0; i < 40; ++i) {
-      gp::BodyDef box = unit_box("box" + std::to_string(i), {static_cast<double>(i), 0.0}, 1.0);
-      if (i == 0) {
-        box.velocity = velocity;
-        box.angular_velocity = angular_velocity;
-      }
-      space.add_body(box);
-    }
+    add_row(space, 40, velocity, angular_velocity);
     space.step(kStep);
     std::vector<Vec2> velocities;
     for (gp::BodyId id = 0; id < space.body_count(); ++id) {
@@ -298,13 +300,7 @@ TEST_CASE(
     gp::Settings settings;
     settings.gravity = Vec2::Zero();
     gp::Space space(settings);
-    constexpr int kRow = 4200;
-    constexpr double kNudge = 0.005;  // m/s
-    for (int i = 0; i < kRow; ++i) {
-      gp::BodyDef box = unit_box("row" + std::to_string(i), {static_cast<double>(i), 0.0}, 1.0);
-      if (i == 0) box.velocity = {kNudge, 0.0};
-      space.add_body(box);
-    }
+    add_row(space, 4200, {0.005, 0.0});
     for (int k = 0; k < 20; ++k) {
       const double x = 3.0 * k;
       gp::BodyDef left = unit_box("left" + std::to_string(k), {x, -5.0}, 1.0);
