@@ -32,6 +32,9 @@ constexpr std::size_t kCollidedPairsPerTask = 256;
 // slot, count): 1.8 MB. The threads wait for each other twice a block: blocks of 4096 pairs made
 // many_pyramids' narrowphase on two threads a sixth slower.
 constexpr std::size_t kCollidedPairsPerBlock = 64 * kCollidedPairsPerTask;
+// Fewer pairs are collided on one thread even where there are more: a second one gains them
+// little, and the contacts it writes are then read on the first by the stages after.
+constexpr std::size_t kParallelPairs = 1024;
 
 AnchorKind anchor_kind(const ShapeRecord& shape) {
   if (shape.centred_disc()) return AnchorKind::kCentredDisc;
@@ -104,7 +107,15 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   std::vector<std::uint8_t>& touching = ctx.touching_pairs;
   reserve_for(touching, pairs.size());
   touching.assign(pairs.size(), 0);
-  if (one_thread()) {
+  const bool threads = !one_thread();
+  // On several threads the slots are held whatever the pairs, so that heap per body does not jump
+  // where a scene's pairs cross kParallelPairs.
+  if (threads) {
+    manifolds_.resize(kCollidedPairsPerBlock);
+    counts_.resize(kCollidedPairsPerBlock);
+    slots_.resize(kCollidedPairsPerBlock);
+  }
+  if (!threads || pairs.size() < kParallelPairs) {
     auto old = previous.begin();
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const ShapePair& p = pairs[i];
@@ -121,9 +132,6 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   // On several threads, a block of pairs at a time (so that the slots take a fixed room rather
   // than room per pair): each pair's manifold into its own slot, the contacts appended in the
   // pairs' order, so that they do not depend on the number of threads, and then filled in.
-  manifolds_.resize(kCollidedPairsPerBlock);
-  counts_.resize(kCollidedPairsPerBlock);
-  slots_.resize(kCollidedPairsPerBlock);
   for (std::size_t first = 0; first < pairs.size(); first += kCollidedPairsPerBlock) {
     const std::size_t size = std::min(kCollidedPairsPerBlock, pairs.size() - first);
     const auto each_range = [size](const auto& work) {
