@@ -380,9 +380,8 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
       tally.resting_failed |= !settled;
     }
   };
-  // An island whose survey the threads share is taken from here rather than from a task of the
-  // islands' loop, whose other tasks the survey's would wait on (large_pyramid on 2 threads: its
-  // islands stage took 160 µs a step that way, against 115 on one thread).
+  // An island whose survey the threads share is taken after the islands' loop, alone: from a task
+  // of the loop, the survey's tasks would wait on the loop's others.
   const auto on_its_own = [&](BodyId root) {
     return surveyed(root) && survey_on_threads(islands, root);
   };
