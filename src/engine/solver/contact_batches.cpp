@@ -46,10 +46,9 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
     level_base_ = 0;
   };
   start_levelling();
-  for (std::size_t r = 0; r < bodies; ++r) {
+  for (const BodyId r : islands_.roots) {
     const std::uint32_t start = islands_.island_start[r];
     const std::uint32_t end = islands_.island_end[r];
-    if (start == end) continue;
     if (splitting.coloured_above > 0 && contacts_in(r) > splitting.coloured_above) {
       any_coloured = true;
     } else if (splitting.parted_above > 0 && contacts_in(r) > splitting.parted_above) {
@@ -324,7 +323,7 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
   // taken go to the last bucket.
   constexpr std::size_t kLastBucket = 2 * kColours;
   std::array<std::uint32_t, kLastBucket + 3> next{};  // counts, then starts
-  for (std::size_t r = 0; r < bodies; ++r) {
+  for (const BodyId r : islands_.roots) {
     if (!large(r)) continue;
     for (std::uint32_t e = islands_.island_start[r]; e < islands_.island_end[r]; ++e) {
       const Contact& c = contacts[islands_.order[e]];
@@ -347,7 +346,7 @@ void ContactBatches::colour(const ContactSet& contacts, const BodyInertia& inert
   next[1] = base;
   for (std::size_t k = 2; k < next.size(); ++k) next[k] += next[k - 1];
   order_.resize(next.back());
-  for (std::size_t r = 0; r < bodies; ++r) {
+  for (const BodyId r : islands_.roots) {
     if (!large(r)) continue;
     for (std::uint32_t e = islands_.island_start[r]; e < islands_.island_end[r]; ++e) {
       const std::uint32_t i = islands_.order[e];

@@ -343,8 +343,8 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
     active.resting_points = 0;
   }
   const std::size_t body_count = bodies.inertia.inverse_mass.size();
-  // A body is in as many contacts as it touches shapes: told at rest once, rather than at each.
   const auto surveyed = [&](BodyId root) { return island_surveyed(islands, root, active); };
+  // A body is in as many contacts as it touches shapes: told at rest once, rather than at each.
   scratch.resting.clear();
   if (std::any_of(islands.roots.begin(), islands.roots.end(), surveyed)) {
     scratch.resting.resize(body_count);
