@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -291,6 +292,46 @@ TEST_CASE("A pyramid is cut between its layers, not through them") {
   std::vector<std::uint32_t> last(order.end() - static_cast<std::ptrdiff_t>(row6_on_row5.size()),
                                   order.end());
   CHECK(last == row6_on_row5);
+}
+
+// The contacts run_in_stretches hands over on `threads` threads, stretch after stretch, and how
+// many stretches.
+struct Stretches {
+  std::vector<std::uint32_t> contacts;
+  std::size_t count = 0;
+};
+
+Stretches stretches_of(const Graph& g, gp::IslandSplitting splitting, int threads = 1) {
+  gp::ContactBatches batches;
+  batches.build(g.contacts, {}, g.inertia, g.positions, splitting);
+  Stretches found;
+  std::mutex taking;
+  tbb::task_arena(threads).execute([&] {
+    batches.run_in_stretches([&](std::span<const std::uint32_t> stretch) {
+      const std::lock_guard<std::mutex> lock(taking);
+      found.contacts.insert(found.contacts.end(), stretch.begin(), stretch.end());
+      ++found.count;
+    });
+  });
+  return found;
+}
+
+TEST_CASE("In stretches, the contacts come in the order of the visit one at a time") {
+  // Levelled islands (one-point contacts), an island parted, and one coloured: on one thread the
+  // stretches hold every contact once, in the order visits() gives.
+  const Graph row(4, {{1, 0}, {2, 0}, {3, 0}, {1, 2}, {2, 3}});
+  CHECK(stretches_of(row, {0, kColouredAbove}).contacts == visits(row));
+  const Graph parted = chain(8);
+  const Stretches parts = stretches_of(parted, {3, 0});
+  CHECK(parts.contacts == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
+  // The parts, then the contacts between them: two stages, two stretches on one thread.
+  CHECK(parts.count == 2);
+  const Graph coloured = chain(kColouredAbove + 10);
+  CHECK(stretches_of(coloured, {0, kColouredAbove}).contacts == visits(coloured));
+  // On two threads, every contact once still.
+  std::vector<std::uint32_t> shared = stretches_of(coloured, {0, kColouredAbove}, 2).contacts;
+  std::sort(shared.begin(), shared.end());
+  CHECK(shared == in_order(coloured.contacts.size()));
 }
 
 TEST_CASE("Colouring an island takes precedence over parting it") {

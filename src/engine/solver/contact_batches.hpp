@@ -91,6 +91,9 @@ class ContactBatches {
     bool by_levels = false;
     /// The other tasks' contacts in two interleaved halves, else in order.
     bool interleaved = false;
+    /// Each block of tasks a thread takes, its contacts in order, whole to solve_independent,
+    /// which must then take them in their order (run_in_stretches).
+    bool whole_blocks = false;
   };
 
   /// The largest value `solve(contact index)` returns over the contacts: stage after stage, the
@@ -108,6 +111,20 @@ class ContactBatches {
         Visit{});
   }
 
+  /// run(solve)'s visit, a stretch of contacts at a time: `solve_stretch(contact indices)` takes
+  /// the contacts of the tasks of a stage that a thread takes together, or of a colour's block,
+  /// in their order. A pass can then do what each contact needs alone for several contacts at
+  /// once, overlapping their chains of divisions, before what must follow their order.
+  template <typename SolveStretch>
+  void run_in_stretches(const SolveStretch& solve_stretch) const {
+    run([](std::uint32_t) { return 0.0; },
+        [&](std::span<const std::uint32_t> stretch) {
+          solve_stretch(stretch);
+          return 0.0;
+        },
+        Visit{.whole_blocks = true});
+  }
+
   /// The same, a task's contacts visited as `visit` says, but contacts that share no movable body
   /// (a colour's, a block at a time, and a level's) go to `solve_independent(contact indices)`,
   /// which returns the largest value over them: they may be solved in any order, or several at
@@ -119,6 +136,10 @@ class ContactBatches {
     };
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
       // In order, the tasks of a block follow one another in order_: one loop over them all.
+      if (visit.whole_blocks) {
+        const std::uint32_t begin = first == 0 ? 0 : task_end_[first - 1];
+        return std::max(largest, solve_independent(entries(begin, task_end_[last - 1])));
+      }
       if (!visit.by_levels && !visit.interleaved) {
         for (std::uint32_t e = first == 0 ? 0 : task_end_[first - 1]; e < task_end_[last - 1]; ++e)
           largest = std::max(largest, solve(order_[e]));
