@@ -135,13 +135,14 @@ class ContactBatches {
       return std::span<const std::uint32_t>(order_.data() + begin, end - begin);
     };
     const auto tasks = [&](std::size_t first, std::size_t last, double largest) {
-      // In order, the tasks of a block follow one another in order_: one loop over them all.
+      // The tasks of a block follow one another in order_: whole, or in order in one loop.
+      const std::uint32_t block_begin = first == 0 ? 0 : task_end_[first - 1];
+      const std::uint32_t block_end = task_end_[last - 1];
       if (visit.whole_blocks) {
-        const std::uint32_t begin = first == 0 ? 0 : task_end_[first - 1];
-        return std::max(largest, solve_independent(entries(begin, task_end_[last - 1])));
+        return std::max(largest, solve_independent(entries(block_begin, block_end)));
       }
       if (!visit.by_levels && !visit.interleaved) {
-        for (std::uint32_t e = first == 0 ? 0 : task_end_[first - 1]; e < task_end_[last - 1]; ++e)
+        for (std::uint32_t e = block_begin; e < block_end; ++e)
           largest = std::max(largest, solve(order_[e]));
         return largest;
       }
