@@ -54,6 +54,15 @@ void add_row(gp::Space& space, int count, const Vec2& velocity, double angular_v
   }
 }
 
+// The velocity of every body of `space`, by id [m/s].
+std::vector<Vec2> velocities_of(const gp::Space& space) {
+  std::vector<Vec2> velocities;
+  for (gp::BodyId id = 0; id < space.body_count(); ++id) {
+    velocities.push_back(space.state(id).velocity);
+  }
+  return velocities;
+}
+
 // Ten unit boxes on the ground, their densities growing geometrically from 1 to 100 upwards.
 std::unique_ptr<gp::Space> heavy_topped_column(gp::Settings settings) {
   settings.gravity = {0.0, -kGravity};
@@ -266,11 +275,7 @@ TEST_CASE(
     gp::Space space(settings);
     add_row(space, 40, velocity, angular_velocity);
     space.step(kStep);
-    std::vector<Vec2> velocities;
-    for (gp::BodyId id = 0; id < space.body_count(); ++id) {
-      velocities.push_back(space.state(id).velocity);
-    }
-    return velocities;
+    return velocities_of(space);
   };
   const gp::Settings defaults;
   SECTION("moving") {
@@ -309,11 +314,7 @@ TEST_CASE(
       space.add_body(unit_box("right" + std::to_string(k), {x + 1.0, -5.0}, 1.0));
     }
     tbb::task_arena(threads).execute([&] { space.step(kStep); });
-    std::vector<Vec2> velocities;
-    for (gp::BodyId id = 0; id < space.body_count(); ++id) {
-      velocities.push_back(space.state(id).velocity);
-    }
-    return velocities;
+    return velocities_of(space);
   };
   const std::vector<Vec2> one = first_step(1);
   CHECK(first_step(2) == one);
