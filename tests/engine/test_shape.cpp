@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "engine/collision/body_shapes.hpp"
@@ -319,6 +321,66 @@ TEST_CASE("A shape's box placed alone is the box of the shape placed whole, bit 
                     std::abs(std::sin(angle)) + 0.5 * std::abs(std::cos(angle)));
     CHECK((boxes.bounds(0).min - (centre - half)).norm() < 1e-9);
     CHECK((boxes.bounds(0).max - (centre + half)).norm() < 1e-9);
+  }
+}
+
+TEST_CASE("A shape's farthest point from its body's centre of mass, its radius left out",
+          "[FR:Determine-Collisions]") {
+  gp::BodyShapes records;
+  records.add(0, Shape::box(2.0, 1.0, {1.0, 0.0}), 0.0, 0.5, true);
+  records.add(0, Shape::circle(0.5, {0.3, -0.4}), 0.0, 0.5, true);
+  records.add(0, Shape::circle(0.5), 0.0, 0.5, true);
+  records.add(0, Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05), 0.0, 0.5, true);
+  // By hand: the corners (2, ±0.5); the centre (0.3, −0.4); the end (2, −0.25).
+  CHECK(gp::turning_reach(records[0].local) == Approx(std::sqrt(4.25)).epsilon(1e-15));
+  CHECK(gp::turning_reach(records[1].local) == Approx(0.5).epsilon(1e-15));
+  CHECK(gp::turning_reach(records[2].local) == 0.0);
+  CHECK(gp::turning_reach(records[3].local) == Approx(std::sqrt(4.0625)).epsilon(1e-15));
+  // Each record keeps it as a float at or above it.
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const double reach = gp::turning_reach(records[i].local);
+    CHECK(static_cast<double>(records.reach(i)) >= reach);
+    CHECK(static_cast<double>(records.reach(i)) <= reach * (1.0 + 1e-7));
+  }
+  // And a shape's stays its own when shapes before it are removed: a unit box's corner, √0.5.
+  records.add(1, Shape::box(1.0, 1.0), 0.0, 0.5, true);
+  records.remove_body(0);
+  REQUIRE(records.size() == 1);
+  CHECK(static_cast<double>(records.reach(0)) == Approx(std::sqrt(0.5)).epsilon(1e-7));
+}
+
+TEST_CASE("A shape's box moved from the start holds the shape moved and turned, and little more",
+          "[FR:Determine-Collisions]") {
+  const std::vector<Shape> shapes{Shape::box(2.0, 1.0, {1.0, 0.0}), Shape::circle(0.5, {0.3, 0.1}),
+                                  Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05),
+                                  Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0.2, 1}})};
+  gp::BodyShapes records;
+  for (const Shape& shape : shapes) records.add(0, shape, 0.0, 0.5, true);
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  // Turns from none to more than a whole turn, the larger ones rarer.
+  const std::vector<double> turn_scales{0.0, 1e-9, 1e-3, 0.1, 3.0, 10.0};
+  for (int k = 0; k < 2000; ++k) {
+    const Vec2 from(1e3 * unit(random), 10.0 * unit(random));
+    const double angle = kPi * (1.0 + unit(random));
+    const double turn =
+        turn_scales[static_cast<std::size_t>(k) % turn_scales.size()] * unit(random);
+    const Vec2 to = from + Vec2(unit(random), unit(random));
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      const gp::PackedGeometry& local = records[i].local;
+      const gp::Aabb start = gp::placed_bounds(local, gp::Transform(from, angle));
+      const gp::Aabb end = gp::placed_bounds(local, gp::Transform(to, angle + turn));
+      const double reach = gp::turning_reach(local);
+      const gp::Aabb moved = gp::moved_bounds(start, to - from, turn, reach);
+      INFO("shape " << i << ", turn " << turn);
+      CHECK((moved.min.array() <= end.min.array()).all());
+      CHECK((moved.max.array() >= end.max.array()).all());
+      // Each side within the two boxes' moves, |turn| · reach each (at most 2 reach), of the
+      // tight one.
+      const double looser = 2.0 * std::min(std::abs(turn), 2.0) * reach + 1e-9;
+      CHECK(((end.min - moved.min).array() <= looser).all());
+      CHECK(((moved.max - end.max).array() <= looser).all());
+    }
   }
 }
 

@@ -1,7 +1,9 @@
 #include "engine/collision/body_shapes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <variant>
 
@@ -9,6 +11,18 @@
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
+
+namespace {
+
+// The float nearest above `value`, or equal to it.
+float rounded_up(double value) {
+  const auto nearest = static_cast<float>(value);
+  return static_cast<double>(nearest) >= value
+             ? nearest
+             : std::nextafter(nearest, std::numeric_limits<float>::infinity());
+}
+
+}  // namespace
 
 void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
                      bool moves) {
@@ -37,7 +51,9 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     kept = last_polygon_ = PolygonView{std::span(block, count), std::span(block + count, count)};
     polygon_vertices_ += count;
   }
-  append(records_, {PackedGeometry(kept), body, moves, restitution, friction});
+  const PackedGeometry packed(kept);
+  append(records_, {packed, body, moves, restitution, friction});
+  append(reaches_, rounded_up(turning_reach(packed)));
   if (restitution > 0.0) ++bouncing_;
 }
 
@@ -65,6 +81,7 @@ BodyShapes::Range BodyShapes::remove_body(BodyId body) {
   polygons_.erase(polygons_.begin() + first_block, polygons_.begin() + first_block + blocks);
   last_polygon_ = {};  // its block may have gone with the body
   records_.erase(before, after);
+  reaches_.erase(reaches_.begin() + removed.first, reaches_.begin() + removed.last);
   const std::uint32_t count = removed.last - removed.first;
   for (std::size_t b = body + std::size_t{1}; b < first_.size(); ++b) first_[b] -= count;
   return removed;

@@ -51,6 +51,9 @@ class BodyShapes {
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
+  /// Of shape `i` [m]: its turning_reach, rounded up to a float; what a turn of its body moves it
+  /// by at most, per radian. Kept beside the records, as a field of theirs would take 8 bytes more.
+  float reach(std::size_t i) const { return reaches_[i]; }
   /// Whether a shape has a coefficient of restitution above 0: without one, no contact bounces.
   bool any_bounce() const { return bouncing_ > 0; }
 
@@ -77,13 +80,27 @@ class BodyShapes {
   template <typename Pose, typename Placements>
   void place(const Pose& pose, Placements& world) const;
 
+  /// Bounds in `end` every moving shape at the end of a step of h [s] along `path`, from the
+  /// centres of mass `from` [m, by body id] at which `start` placed the shapes: a disc about its
+  /// centre of mass exactly where `path.position(body, h)` [m] puts it, as it needs no sine, every
+  /// other shape by its box in `start` moved and grown for `path.turn(body, h)` [rad]
+  /// (moved_bounds), which needs none either. (`Path`: Ballistic's interface.)
+  template <typename Path>
+  void bound_moved(const WorldShapes& start, std::span<const Vec2> from, const Path& path, double h,
+                   WorldBounds& end) const;
+
  private:
   void lay_out(WorldShapes& world) const {
     world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
   }
   void lay_out(WorldBounds& world) const { world.lay_out(records_.size()); }
+  /// Calls `work(record, index)` for each shape that `world` must place: the moving ones, and
+  /// every one at the first placement, which lays `world` out.
+  template <typename Placements, typename Work>
+  void each_to_place(Placements& world, const Work& work) const;
 
   std::vector<ShapeRecord> records_;
+  std::vector<float> reaches_;  // per shape, reach()
   // Per polygon, its vertices then its normals: a block, which stays where it is as shapes are
   // added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is, and shared
   // with the polygons added after it that are the same.
@@ -94,21 +111,40 @@ class BodyShapes {
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 
-template <typename Pose, typename Placements>
-void BodyShapes::place(const Pose& pose, Placements& world) const {
+template <typename Placements, typename Work>
+void BodyShapes::each_to_place(Placements& world, const Work& work) const {
   const bool first = world.size() != records_.size();
   if (first) lay_out(world);
   const auto place_shapes = [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const ShapeRecord& r = records_[i];
-      if (!r.moves && !first) continue;
-      const auto [position, angle] = pose(r.body);
-      world.place(i, r.local, r.frame(position, angle));
+      if (records_[i].moves || first) work(records_[i], i);
     }
   };
   // Once placed, each shape has its own room in `world`: the shapes are placed side by side.
   constexpr std::size_t kShapesPerTask = 1024;  // a shape costs tens of nanoseconds
   for_blocks(records_.size(), kShapesPerTask, first, place_shapes);
+}
+
+template <typename Pose, typename Placements>
+void BodyShapes::place(const Pose& pose, Placements& world) const {
+  each_to_place(world, [&](const ShapeRecord& r, std::size_t i) {
+    const auto [position, angle] = pose(r.body);
+    world.place(i, r.local, r.frame(position, angle));
+  });
+}
+
+template <typename Path>
+void BodyShapes::bound_moved(const WorldShapes& start, std::span<const Vec2> from, const Path& path,
+                             double h, WorldBounds& end) const {
+  each_to_place(end, [&](const ShapeRecord& r, std::size_t i) {
+    const Vec2 to = path.position(r.body, h);
+    if (r.centred_disc()) {
+      end.place(i, r.local, Transform(to));
+    } else {
+      end.place(
+          i, moved_bounds(start.bounds(i), to - from[r.body], path.turn(r.body, h), reaches_[i]));
+    }
+  });
 }
 
 }  // namespace gp

@@ -1,9 +1,14 @@
 #pragma once
-// The bounding box of every shape of a space placed in the world at one instant, and nothing
-// else: the broadphase needs no more of the shapes at the end of a step, and the time-of-impact
-// search, their one other reader, places a pair there itself when it gets that far.
+// A box holding every shape of a space placed in the world at one instant, and nothing else: the
+// broadphase needs no more of the shapes at the end of a step, and the time-of-impact search,
+// their one other reader, places a pair there itself when it gets that far. A box moved from the
+// shape's placement at the start of the step needs no sine, where the tight box of a turned shape
+// needs one.
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "engine/geometry/aabb.hpp"
@@ -15,6 +20,26 @@ namespace gp {
 /// The tight bounding box (m) of shape `local` (body frame) moved into the world by
 /// `transform`: bit for bit the box of the shape placed whole (to_world, WorldShapes).
 Aabb placed_bounds(const PackedGeometry& local, const Transform& transform);
+
+/// The farthest that a point of shape `local` (body frame) lies from its body's centre of mass,
+/// leaving out a disc's or a segment's radius [m]: a turn of the body by Δθ moves no point of the
+/// shape farther than |Δθ| times this.
+double turning_reach(const PackedGeometry& local);
+
+/// A box [m] that holds a shape whose box is `start` once its body has moved by `shift` [m] and
+/// turned by `turn` [rad], the shape's turning_reach being at most `reach` [m]: `start` moved by
+/// `shift` and grown by |turn| · reach (at most 2 · reach), and by a little more for the
+/// round-off of either placement. Inline: it is asked for every shape at every step.
+inline Aabb moved_bounds(const Aabb& start, const Vec2& shift, double turn, double reach) {
+  // A point turned about the centre of mass by Δθ moves by 2 |sin(Δθ / 2)| r: at most |Δθ| r, and
+  // 2r whatever the turn. Each coordinate of either placement is rounded a few times, each by at
+  // most an epsilon of the largest magnitude in it.
+  constexpr double kRoundOff = 16.0 * std::numeric_limits<double>::epsilon();
+  const double scale = std::max(start.min.cwiseAbs().maxCoeff(), start.max.cwiseAbs().maxCoeff()) +
+                       shift.cwiseAbs().maxCoeff() + reach;
+  const double growth = std::min(std::abs(turn), 2.0) * reach + kRoundOff * scale;
+  return {(start.min + shift).array() - growth, (start.max + shift).array() + growth};
+}
 
 class WorldBounds {
  public:
@@ -28,6 +53,9 @@ class WorldBounds {
   void place(std::size_t i, const PackedGeometry& local, const Transform& transform) {
     boxes_[i] = placed_bounds(local, transform);
   }
+
+  /// Places shape `i` by a box that holds it (moved_bounds).
+  void place(std::size_t i, const Aabb& box) { boxes_[i] = box; }
 
   std::size_t size() const { return boxes_.size(); }
   /// The box of shape `i` as placed [m].

@@ -29,9 +29,12 @@ Vec2 Ballistic::position(BodyId body, double tau) const {
 }
 
 double Ballistic::angle(BodyId body, double tau) const {
+  return dd::rotated_orientation(start.angle[body], turn(body, tau));
+}
+
+double Ballistic::turn(BodyId body, double tau) const {
   const double at = shape == PathShape::kParabola ? tau / 2 : std::max(tau, 0.0);
-  return dd::rotated_orientation(
-      start.angle[body], dd::angular_displacement_from_velocity(angular_velocity(body, at), tau));
+  return dd::angular_displacement_from_velocity(angular_velocity(body, at), tau);
 }
 
 namespace {

@@ -36,6 +36,9 @@ struct Ballistic {
   /// Transform of `body` after τ [s].
   Vec2 position(BodyId body, double tau) const;
   double angle(BodyId body, double tau) const;
+  /// The angle [rad] `body` turns through over τ [s]: angle() is its start orientation turned by
+  /// it, and kept within a turn.
+  double turn(BodyId body, double tau) const;
   /// Velocities of `body` after τ [s].
   Vec2 velocity(BodyId body, double tau) const;
   double angular_velocity(BodyId body, double tau) const;

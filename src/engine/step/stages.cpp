@@ -60,8 +60,7 @@ bool sweep(StepContext& c, StepMechanisms& m) {
   // the kinematic stage moves them, and static ones where they are.
   const Ballistic& path = *c.motion;
   const double h = c.h;
-  c.shapes.place([&](BodyId j) { return std::pair(path.position(j, h), path.angle(j, h)); },
-                 c.end_bounds);
+  c.shapes.bound_moved(c.world_start, c.start.position, path, h, c.end_bounds);
   c.pairs = m.detection.candidate_pairs(c.shapes, c.dynamic, c.world_start, c.end_bounds);
   return true;
 }

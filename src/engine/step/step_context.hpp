@@ -50,7 +50,7 @@ struct StepContext {
 
   // Collisions.
   WorldShapes world_start;           ///< the shapes placed at the start of h
-  WorldBounds end_bounds;            ///< their boxes at the end of h, along `motion`
+  WorldBounds end_bounds;            ///< boxes holding them at the end of h, along `motion`
   std::span<const ShapePair> pairs;  ///< the candidate pairs the contacts are found for (in a
                                      ///< sub-step, without its impact pairs)
   /// Per pair: 1 when its contact touches (touches(), within Settings::linear_slop), set with
