@@ -339,14 +339,14 @@ TEST_CASE("A shape's farthest point from its body's centre of mass, its radius l
   // Each record keeps it as a float at or above it.
   for (std::size_t i = 0; i < records.size(); ++i) {
     const double reach = gp::turning_reach(records[i].local);
-    CHECK(static_cast<double>(records.reach(i)) >= reach);
-    CHECK(static_cast<double>(records.reach(i)) <= reach * (1.0 + 1e-7));
+    CHECK(static_cast<double>(records[i].reach) >= reach);
+    CHECK(static_cast<double>(records[i].reach) <= reach * (1.0 + 1e-7));
   }
   // And a shape's stays its own when shapes before it are removed: a unit box's corner, √0.5.
   records.add(1, Shape::box(1.0, 1.0), 0.0, 0.5, true);
   records.remove_body(0);
   REQUIRE(records.size() == 1);
-  CHECK(static_cast<double>(records.reach(0)) == Approx(std::sqrt(0.5)).epsilon(1e-7));
+  CHECK(static_cast<double>(records[0].reach) == Approx(std::sqrt(0.5)).epsilon(1e-7));
 }
 
 TEST_CASE("A shape's box moved from the start holds the shape moved and turned, and little more",

@@ -52,8 +52,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     polygon_vertices_ += count;
   }
   const PackedGeometry packed(kept);
-  append(records_, {packed, body, moves, restitution, friction});
-  append(reaches_, rounded_up(turning_reach(packed)));
+  append(records_, {packed, body, moves, rounded_up(turning_reach(packed)), restitution, friction});
   if (restitution > 0.0) ++bouncing_;
 }
 
@@ -81,7 +80,6 @@ BodyShapes::Range BodyShapes::remove_body(BodyId body) {
   polygons_.erase(polygons_.begin() + first_block, polygons_.begin() + first_block + blocks);
   last_polygon_ = {};  // its block may have gone with the body
   records_.erase(before, after);
-  reaches_.erase(reaches_.begin() + removed.first, reaches_.begin() + removed.last);
   const std::uint32_t count = removed.last - removed.first;
   for (std::size_t b = body + std::size_t{1}; b < first_.size(); ++b) first_[b] -= count;
   return removed;

@@ -20,11 +20,16 @@ namespace gp {
 
 /// A shape of a body, in the body frame centred on the centre of mass; a polygon's vertices are
 /// BodyShapes' to keep. 72 bytes: with the geometry as a GeometryView, whose variant and 16-byte
-/// alignment take 64 bytes, it would take 96.
+/// alignment take 64 bytes, it would take 96. `body`, `moves` and `reach` lie in the room that
+/// `local`'s kind leaves at its end (no_unique_address), where a field of their own would take 8
+/// bytes more a shape; nothing assigns `local` alone, which could write over them.
 struct ShapeRecord {
-  PackedGeometry local;
+  [[no_unique_address]] PackedGeometry local;
   BodyId body;
   bool moves;  ///< false for the shapes of static bodies
+  /// m: turning_reach of `local`, rounded up to a float: a turn of the body moves the shape by at
+  /// most this much per radian.
+  float reach;
   double restitution;
   double friction;
 
@@ -39,6 +44,7 @@ struct ShapeRecord {
     return centred_disc() ? Transform(position) : Transform(position, angle);
   }
 };
+static_assert(sizeof(ShapeRecord) == 72, "ShapeRecord's fields after `local` fit in its tail");
 
 /// The shapes of a space, and their world placement for a given motion state.
 class BodyShapes {
@@ -51,9 +57,6 @@ class BodyShapes {
   void add(BodyId body, const Shape& local, double restitution, double friction, bool moves);
   std::size_t size() const { return records_.size(); }
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
-  /// Of shape `i` [m]: its turning_reach, rounded up to a float; what a turn of its body moves it
-  /// by at most, per radian. Kept beside the records, as a field of theirs would take 8 bytes more.
-  float reach(std::size_t i) const { return reaches_[i]; }
   /// Whether a shape has a coefficient of restitution above 0: without one, no contact bounces.
   bool any_bounce() const { return bouncing_ > 0; }
 
@@ -100,7 +103,6 @@ class BodyShapes {
   void each_to_place(Placements& world, const Work& work) const;
 
   std::vector<ShapeRecord> records_;
-  std::vector<float> reaches_;  // per shape, reach()
   // Per polygon, its vertices then its normals: a block, which stays where it is as shapes are
   // added, sized to the polygon rather than to kMaxPolygonVertices as a Shape is, and shared
   // with the polygons added after it that are the same.
@@ -141,8 +143,7 @@ void BodyShapes::bound_moved(const WorldShapes& start, std::span<const Vec2> fro
     if (r.centred_disc()) {
       end.place(i, r.local, Transform(to));
     } else {
-      end.place(
-          i, moved_bounds(start.bounds(i), to - from[r.body], path.turn(r.body, h), reaches_[i]));
+      end.place(i, moved_bounds(start.bounds(i), to - from[r.body], path.turn(r.body, h), r.reach));
     }
   });
 }
