@@ -29,6 +29,19 @@ void check_near(const Vec2& actual, const Vec2& expected, double tolerance = 1e-
   CHECK((actual - expected).norm() <= tolerance);
 }
 
+// A box off the centre of mass, an offset disc, a rounded segment and a triangle.
+std::vector<Shape> one_of_each_kind() {
+  return {Shape::box(2.0, 1.0, {1.0, 0.0}), Shape::circle(0.5, {0.3, 0.1}),
+          Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05),
+          Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0.2, 1}})};
+}
+
+gp::BodyShapes on_one_body(const std::vector<Shape>& shapes) {
+  gp::BodyShapes records;
+  for (const Shape& shape : shapes) records.add(0, shape, 0.0, 0.5, true);
+  return records;
+}
+
 gp::ConvexPolygon polygon_of(const Shape& shape) {
   return std::get<gp::ConvexPolygon>(shape.geometry());
 }
@@ -298,11 +311,8 @@ TEST_CASE("Shapes placed in one pool are placed as one by one, and keep their ro
 
 TEST_CASE("A shape's box placed alone is the box of the shape placed whole, bit for bit",
           "[FR:Determine-Collisions]") {
-  const std::vector<Shape> shapes{Shape::box(2.0, 1.0, {1.0, 0.0}), Shape::circle(0.5, {0.3, 0.1}),
-                                  Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05),
-                                  Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0.2, 1}})};
-  gp::BodyShapes records;
-  for (const Shape& shape : shapes) records.add(0, shape, 0.0, 0.5, true);
+  const std::vector<Shape> shapes = one_of_each_kind();
+  const gp::BodyShapes records = on_one_body(shapes);
   gp::WorldBounds boxes;
   boxes.lay_out(shapes.size());
   for (int k = 0; k < 200; ++k) {
@@ -351,11 +361,8 @@ TEST_CASE("A shape's farthest point from its body's centre of mass, its radius l
 
 TEST_CASE("A shape's box moved from the start holds the shape moved and turned, and little more",
           "[FR:Determine-Collisions]") {
-  const std::vector<Shape> shapes{Shape::box(2.0, 1.0, {1.0, 0.0}), Shape::circle(0.5, {0.3, 0.1}),
-                                  Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05),
-                                  Shape::polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {0.2, 1}})};
-  gp::BodyShapes records;
-  for (const Shape& shape : shapes) records.add(0, shape, 0.0, 0.5, true);
+  const std::vector<Shape> shapes = one_of_each_kind();
+  const gp::BodyShapes records = on_one_body(shapes);
   std::mt19937_64 random(17);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   // Turns from none to more than a whole turn, the larger ones rarer.
