@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/collision/body_shapes.hpp"
+#include "engine/geometry/shape_extent.hpp"
 #include "engine/impacts/impacts.hpp"
 
 using gp::Shape;
@@ -88,7 +89,7 @@ TEST_CASE("A shape's box at the end of a step holds it there, and no more than i
         }
         // Each side within two moves of |turn| · reach (at most 2 reach): the box at the start
         // against the tight one, and the growth.
-        const double looser = 2.0 * std::min(std::abs(turn), 2.0) * gp::turning_reach(shape.local);
+        const double looser = 2.0 * std::min(std::abs(turn), 2.0) * gp::core_reach(shape.local);
         CHECK(((whole.min - bound.min).array() <= looser + 1e-9).all());
         CHECK(((bound.max - whole.max).array() <= looser + 1e-9).all());
       }

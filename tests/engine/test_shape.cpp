@@ -11,6 +11,7 @@
 
 #include "engine/collision/body_shapes.hpp"
 #include "engine/geometry/mass_properties.hpp"
+#include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/world_bounds.hpp"
 #include "engine/geometry/world_shape.hpp"
 #include "engine/geometry/world_shapes.hpp"
@@ -334,7 +335,7 @@ TEST_CASE("A shape's box placed alone is the box of the shape placed whole, bit 
   }
 }
 
-TEST_CASE("A shape's farthest point from its body's centre of mass, its radius left out",
+TEST_CASE("A shape's farthest point from its body's centre of mass, with and without its radius",
           "[FR:Determine-Collisions]") {
   gp::BodyShapes records;
   records.add(0, Shape::box(2.0, 1.0, {1.0, 0.0}), 0.0, 0.5, true);
@@ -342,21 +343,26 @@ TEST_CASE("A shape's farthest point from its body's centre of mass, its radius l
   records.add(0, Shape::circle(0.5), 0.0, 0.5, true);
   records.add(0, Shape::segment({-1.0, 0.5}, {2.0, -0.25}, 0.05), 0.0, 0.5, true);
   // By hand: the corners (2, ±0.5); the centre (0.3, −0.4); the end (2, −0.25).
-  CHECK(gp::turning_reach(records[0].local) == Approx(std::sqrt(4.25)).epsilon(1e-15));
-  CHECK(gp::turning_reach(records[1].local) == Approx(0.5).epsilon(1e-15));
-  CHECK(gp::turning_reach(records[2].local) == 0.0);
-  CHECK(gp::turning_reach(records[3].local) == Approx(std::sqrt(4.0625)).epsilon(1e-15));
+  CHECK(gp::core_reach(records[0].local) == Approx(std::sqrt(4.25)).epsilon(1e-15));
+  CHECK(gp::core_reach(records[1].local) == Approx(0.5).epsilon(1e-15));
+  CHECK(gp::core_reach(records[2].local) == 0.0);
+  CHECK(gp::core_reach(records[3].local) == Approx(std::sqrt(4.0625)).epsilon(1e-15));
+  // reach() adds the radius: the whole shape's farthest point.
+  CHECK(gp::reach(records[0].local) == Approx(std::sqrt(4.25)).epsilon(1e-15));
+  CHECK(gp::reach(records[1].local) == Approx(1.0).epsilon(1e-15));
+  CHECK(gp::reach(records[2].local) == 0.5);
+  CHECK(gp::reach(records[3].local) == Approx(std::sqrt(4.0625) + 0.05).epsilon(1e-15));
   // Each record keeps it as a float at or above it.
   for (std::size_t i = 0; i < records.size(); ++i) {
-    const double reach = gp::turning_reach(records[i].local);
-    CHECK(static_cast<double>(records[i].reach) >= reach);
-    CHECK(static_cast<double>(records[i].reach) <= reach * (1.0 + 1e-7));
+    const double reach = gp::core_reach(records[i].local);
+    CHECK(static_cast<double>(records[i].core_reach) >= reach);
+    CHECK(static_cast<double>(records[i].core_reach) <= reach * (1.0 + 1e-7));
   }
   // And a shape's stays its own when shapes before it are removed: a unit box's corner, √0.5.
   records.add(1, Shape::box(1.0, 1.0), 0.0, 0.5, true);
   records.remove_body(0);
   REQUIRE(records.size() == 1);
-  CHECK(static_cast<double>(records[0].reach) == Approx(std::sqrt(0.5)).epsilon(1e-7));
+  CHECK(static_cast<double>(records[0].core_reach) == Approx(std::sqrt(0.5)).epsilon(1e-7));
 }
 
 TEST_CASE("A shape's box moved from the start holds the shape moved and turned, and little more",
@@ -377,7 +383,7 @@ TEST_CASE("A shape's box moved from the start holds the shape moved and turned, 
       const gp::PackedGeometry& local = records[i].local;
       const gp::Aabb start = gp::placed_bounds(local, gp::Transform(from, angle));
       const gp::Aabb end = gp::placed_bounds(local, gp::Transform(to, angle + turn));
-      const double reach = gp::turning_reach(local);
+      const double reach = gp::core_reach(local);
       const gp::Aabb moved = gp::moved_bounds(start, to - from, turn, reach);
       INFO("shape " << i << ", turn " << turn);
       CHECK((moved.min.array() <= end.min.array()).all());

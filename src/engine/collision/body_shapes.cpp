@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "engine/capacity.hpp"
+#include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
@@ -52,7 +53,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     polygon_vertices_ += count;
   }
   const PackedGeometry packed(kept);
-  append(records_, {packed, body, moves, rounded_up(turning_reach(packed)), restitution, friction});
+  append(records_, {packed, body, moves, rounded_up(core_reach(packed)), restitution, friction});
   if (restitution > 0.0) ++bouncing_;
 }
 

@@ -20,16 +20,16 @@ namespace gp {
 
 /// A shape of a body, in the body frame centred on the centre of mass; a polygon's vertices are
 /// BodyShapes' to keep. 72 bytes: with the geometry as a GeometryView, whose variant and 16-byte
-/// alignment take 64 bytes, it would take 96. `body`, `moves` and `reach` lie in the room that
+/// alignment take 64 bytes, it would take 96. `body`, `moves` and `core_reach` lie in the room that
 /// `local`'s kind leaves at its end (no_unique_address), where a field of their own would take 8
 /// bytes more a shape; nothing assigns `local` alone, which could write over them.
 struct ShapeRecord {
   [[no_unique_address]] PackedGeometry local;
   BodyId body;
   bool moves;  ///< false for the shapes of static bodies
-  /// m: turning_reach of `local`, rounded up to a float: a turn of the body moves the shape by at
-  /// most this much per radian.
-  float reach;
+  /// m: core_reach of `local`, rounded up to a float: a turn of the body moves the shape's box by
+  /// at most this much per radian.
+  float core_reach;
   double restitution;
   double friction;
 
@@ -143,7 +143,8 @@ void BodyShapes::bound_moved(const WorldShapes& start, std::span<const Vec2> fro
     if (r.centred_disc()) {
       end.place(i, r.local, Transform(to));
     } else {
-      end.place(i, moved_bounds(start.bounds(i), to - from[r.body], path.turn(r.body, h), r.reach));
+      end.place(
+          i, moved_bounds(start.bounds(i), to - from[r.body], path.turn(r.body, h), r.core_reach));
     }
   });
 }

@@ -1,9 +1,9 @@
 #pragma once
 // A box holding every shape of a space placed in the world at one instant, and nothing else: the
-// broadphase needs no more of the shapes at the end of a step, and the time-of-impact search,
-// their one other reader, places a pair there itself when it gets that far. A box moved from the
-// shape's placement at the start of the step needs no sine, where the tight box of a turned shape
-// needs one.
+// broadphase and the waking of sleeping islands need no more of the shapes at the end of a step,
+// and the time-of-impact search places a pair there itself when it gets that far. A box moved
+// from the shape's placement at the start of the step needs no sine, where the tight box of a
+// turned shape needs one.
 
 #include <algorithm>
 #include <cmath>
@@ -21,13 +21,8 @@ namespace gp {
 /// `transform`: bit for bit the box of the shape placed whole (to_world, WorldShapes).
 Aabb placed_bounds(const PackedGeometry& local, const Transform& transform);
 
-/// The farthest that a point of shape `local` (body frame) lies from its body's centre of mass,
-/// leaving out a disc's or a segment's radius [m]: a turn of the body by Δθ moves no point of the
-/// shape farther than |Δθ| times this.
-double turning_reach(const PackedGeometry& local);
-
 /// A box [m] that holds a shape whose box is `start` once its body has moved by `shift` [m] and
-/// turned by `turn` [rad], the shape's turning_reach being at most `reach` [m]: `start` moved by
+/// turned by `turn` [rad], the shape's core_reach being at most `reach` [m]: `start` moved by
 /// `shift` and grown by |turn| · reach (at most 2 · reach), and by a little more for the
 /// round-off of either placement. Inline: it is asked for every shape at every step.
 inline Aabb moved_bounds(const Aabb& start, const Vec2& shift, double turn, double reach) {
@@ -38,7 +33,7 @@ inline Aabb moved_bounds(const Aabb& start, const Vec2& shift, double turn, doub
   const double scale = std::max(start.min.cwiseAbs().maxCoeff(), start.max.cwiseAbs().maxCoeff()) +
                        shift.cwiseAbs().maxCoeff() + reach;
   const double growth = std::min(std::abs(turn), 2.0) * reach + kRoundOff * scale;
-  return {(start.min + shift).array() - growth, (start.max + shift).array() + growth};
+  return Aabb{start.min + shift, start.max + shift}.fattened(growth);
 }
 
 class WorldBounds {
