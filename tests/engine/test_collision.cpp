@@ -89,6 +89,39 @@ TEST_CASE("Two unit circles 1.5 apart overlap by 0.5 along the line of centres",
   CHECK(gp::signed_distance(a, b) == Approx(-0.5).epsilon(1e-14));
 }
 
+TEST_CASE("Two discs collided from their centre gap touch along the line of centres",
+          "[FR:Determine-Collisions]") {
+  // By hand: centres (3, 4) and (0, 0) lie 5 apart, along (0.6, 0.8) from b towards a.
+  const gp::CentreGap by_hand = gp::centre_gap({{3.0, 4.0}, 1.0}, {{0.0, 0.0}, 2.0});
+  CHECK(by_hand.distance == 5.0);
+  check_near(by_hand.direction, {0.6, 0.8}, 1e-15);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int touching = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const gp::Circle a{{unit(random), unit(random)}, 0.5 + 0.4 * unit(random)};
+    // Every tenth pair concentric, where the gap has no direction and the normal is fixed.
+    const gp::Circle b{trial % 10 == 0 ? a.center : Vec2(unit(random), unit(random)),
+                       0.5 + 0.4 * unit(random)};
+    const ContactManifold m = gp::collide_circles(a, b, gp::centre_gap(a, b), 0.05);
+    // Each disc's surface point nearest the other lies its radius from its centre along the
+    // line of centres; the contact point lies midway between them.
+    const Vec2 offset = a.center - b.center;
+    const double distance = std::hypot(offset.x(), offset.y());
+    const double depth = a.radius + b.radius - distance;
+    INFO("trial " << trial);
+    REQUIRE(m.count == (depth >= -0.05 ? 1 : 0));
+    touching += m.count;
+    if (m.count == 0) continue;
+    const Vec2 normal = distance > 0.0 ? Vec2(offset / distance) : Vec2(0.0, 1.0);
+    check_near(m.normal, normal, 1e-15);
+    CHECK(m.points[0].depth == Approx(depth).margin(1e-15));
+    check_near(m.points[0].position,
+               0.5 * (a.center - a.radius * normal + b.center + b.radius * normal), 1e-15);
+  }
+  CHECK(touching > 500);
+}
+
 TEST_CASE("A box resting on a box touches at its two bottom corners",
           "[FR:Determine-Collisions][LC:Expanded-Collisions]") {
   const WorldShape box = place(kUnitBox, {0.2, 0.45});  // sunk 0.05 into the ground

@@ -20,17 +20,24 @@ void add_point(ContactManifold& manifold, const Vec2& on_a, const Vec2& on_b, do
   manifold.points[manifold.count++] = {0.5 * (on_a + on_b), depth, id};
 }
 
-ContactManifold collide_circles(const Circle& a, const Circle& b, double margin) {
-  const Vec2 offset = a.center - b.center;
-  const double distance = offset.norm();
-  const double separation = distance - a.radius - b.radius;
+}  // namespace
+
+ContactManifold collide_circles(const Circle& a, const Circle& b, const CentreGap& gap,
+                                double margin) {
+  const double separation = gap.distance - a.radius - b.radius;
   ContactManifold manifold;
   if (separation > margin) return manifold;
   // Concentric circles: every direction is as good; a fixed one keeps runs reproducible.
-  manifold.normal = distance > 0.0 ? Vec2(offset / distance) : Vec2(0.0, 1.0);
+  manifold.normal = gap.distance > 0.0 ? gap.direction : Vec2(0.0, 1.0);
   add_point(manifold, a.center - a.radius * manifold.normal, b.center + b.radius * manifold.normal,
             -separation, {}, margin);
   return manifold;
+}
+
+namespace {
+
+ContactManifold collide_circles(const Circle& a, const Circle& b, double margin) {
+  return collide_circles(a, b, centre_gap(a, b), margin);
 }
 
 /// Hull as A, circle as B. The circle has one feature, so its one point keeps id {0, 0} as it
