@@ -88,10 +88,13 @@ struct DiscGrid {
       p.normal_impulse = std::abs(unit(random));
       p.tangent_impulse = c.friction * p.normal_impulse * unit(random);
       // For the position passes: discs about their centres, overlapping by 5 cm but the ground's
-      // (body 0, at the origin), by up to 3 cm; the deepest points the radius along the normal.
+      // (body 0, at the origin), by up to 3 cm. Each arm along the normal reaches the point
+      // midway between the centres, as the narrowphase's do the contact point, so that at
+      // detection the deepest points lie −depth apart.
       p.anchor_a = p.anchor_b = gp::AnchorKind::kCentredDisc;
-      p.tangent_arm_a = -0.5;
-      p.tangent_arm_b = 0.5;
+      const gp::Vec2 midway = 0.5 * (state.position[a] + state.position[b]);
+      p.tangent_arm_a = (midway - state.position[a]).dot(c.normal);
+      p.tangent_arm_b = (midway - state.position[b]).dot(c.normal);
       p.depth = static_cast<float>(b == 0 ? 0.03 * std::abs(unit(random)) : 0.05);
     }
     // Since detection the discs moved by up to 1 mm.

@@ -95,8 +95,8 @@ TEST_CASE("Centred discs' position pass four at a time is the same to the bit as
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Discs lanes(seed);
     Discs one(seed);
-    const bool deep = gp::correct_centred_discs(
-        lanes.set, lanes.indices, {lanes.inertia, lanes.detected, kSlop}, lanes.state);
+    const bool deep =
+        gp::correct_centred_discs(lanes.set, lanes.indices, {lanes.inertia, kSlop}, lanes.state);
     gp::PositionCorrection passes;
     passes.correct(one.set, {one.shapes, one.inertia, one.detected}, {1, kSlop}, one.state);
     INFO("seed " << seed);
@@ -120,8 +120,7 @@ TEST_CASE("Centred discs' position pass four at a time removes a fifth of each e
   std::vector<double> before;
   for (const std::uint32_t i : discs.indices) before.push_back(discs.separation(i));
   const gp::Vec2 moved_before = discs.state.position[3];
-  gp::correct_centred_discs(discs.set, discs.indices, {discs.inertia, discs.detected, kSlop},
-                            discs.state);
+  gp::correct_centred_discs(discs.set, discs.indices, {discs.inertia, kSlop}, discs.state);
   int corrected = 0;
   for (const std::uint32_t i : discs.indices) {
     const gp::Contact& c = discs.set[i];

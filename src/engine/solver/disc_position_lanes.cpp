@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
-#include <vector>
 
 #include "engine/solver/contact_islands.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
@@ -19,8 +18,10 @@ namespace {
 #if GP_LANES_AVX2
 
 // The n ≤ 4 contacts from `four` on, a lane each: PositionCorrection's pass over a point whose
-// anchors are both centred discs (MovedSinceDetection::within_slop with arms bounded by 0, arms
-// along the normal, no moment). The lanes past n take the first's contact, to read only.
+// anchors are both centred discs (arms along the normal, no moment). Every lane's separation is
+// found: a point the pass one at a time passes over as surely within the slop (its bound leaves
+// room for the separation's round-off many times over) has no excess here either, and so is left
+// as it is. The lanes past n take the first's contact, to read only.
 [[gnu::target("avx2")]] bool correct_four(const ContactSet& set, const std::uint32_t* four,
                                           std::size_t n, const DiscPositionInput& in,
                                           MotionState& s) {
@@ -36,13 +37,10 @@ namespace {
   const auto point_field = [&p](double ContactPointState::*field) {
     return std::array<double, 4>{p[0]->*field, p[1]->*field, p[2]->*field, p[3]->*field};
   };
-  Four nx, ny, pax, pay, pbx, pby, dax, day, dbx, dby;
+  Four nx, ny, pax, pay, pbx, pby;
   split(c[0]->normal, c[1]->normal, c[2]->normal, c[3]->normal, nx, ny);
   split(s.position[a[0]], s.position[a[1]], s.position[a[2]], s.position[a[3]], pax, pay);
   split(s.position[b[0]], s.position[b[1]], s.position[b[2]], s.position[b[3]], pbx, pby);
-  const std::vector<Vec2>& detected = in.detected.position;
-  split(detected[a[0]], detected[a[1]], detected[a[2]], detected[a[3]], dax, day);
-  split(detected[b[0]], detected[b[1]], detected[b[2]], detected[b[3]], dbx, dby);
   const Four depth = _mm256_set_pd(p[3]->depth, p[2]->depth, p[1]->depth, p[0]->depth);
   const Four tangent_arm_a = _mm256_loadu_pd(point_field(&ContactPointState::tangent_arm_a).data());
   const Four tangent_arm_b = _mm256_loadu_pd(point_field(&ContactPointState::tangent_arm_b).data());
@@ -50,27 +48,6 @@ namespace {
   const Four slop = _mm256_set1_pd(in.slop);
   const Four zero = _mm256_setzero_pd();
   const Four sign = _mm256_set1_pd(-0.0);
-
-  // MovedSinceDetection: both bodies' travel (1-norms), turns, and the positions' scale.
-  const Four room = _mm256_sub_pd(slop, depth);
-  const Four centres = _mm256_add_pd(
-      _mm256_add_pd(magnitude(_mm256_sub_pd(pax, dax)), magnitude(_mm256_sub_pd(pay, day))),
-      _mm256_add_pd(magnitude(_mm256_sub_pd(pbx, dbx)), magnitude(_mm256_sub_pd(pby, dby))));
-  const Four turn_a =
-      magnitude(_mm256_sub_pd(gather(s.angle.data(), a), gather(in.detected.angle.data(), a)));
-  const Four turn_b =
-      magnitude(_mm256_sub_pd(gather(s.angle.data(), b), gather(in.detected.angle.data(), b)));
-  const Four scale = _mm256_add_pd(
-      _mm256_add_pd(_mm256_set1_pd(1.0), _mm256_add_pd(magnitude(pax), magnitude(pay))),
-      _mm256_add_pd(magnitude(pbx), magnitude(pby)));
-  const Four round_off = _mm256_set1_pd(1e-12);
-  const Four left = _mm256_sub_pd(_mm256_sub_pd(room, centres), _mm256_mul_pd(round_off, scale));
-  const Four bounded =
-      _mm256_sub_pd(_mm256_sub_pd(left, _mm256_mul_pd(_mm256_add_pd(turn_a, round_off), zero)),
-                    _mm256_mul_pd(_mm256_add_pd(turn_b, round_off), zero));
-  const Four within = _mm256_and_pd(_mm256_cmp_pd(left, zero, _CMP_NLT_UQ),
-                                    _mm256_cmp_pd(bounded, zero, _CMP_GE_OQ));
-  const Four passed_over = _mm256_and_pd(_mm256_cmp_pd(room, zero, _CMP_GT_OQ), within);
 
   // The deepest points, half the depth from the contact point along the normal.
   const Four half_depth = _mm256_mul_pd(_mm256_set1_pd(0.5), depth);
@@ -87,9 +64,8 @@ namespace {
       min_of(max_of(_mm256_mul_pd(_mm256_set1_pd(0.2), _mm256_add_pd(separation, slop)),
                     _mm256_set1_pd(-0.2)),
              zero);
-  const Four acts = _mm256_andnot_pd(
-      passed_over,
-      _mm256_and_pd(_mm256_castsi256_pd(first_lanes(n)), _mm256_cmp_pd(excess, zero, _CMP_NEQ_UQ)));
+  const Four acts =
+      _mm256_and_pd(_mm256_castsi256_pd(first_lanes(n)), _mm256_cmp_pd(excess, zero, _CMP_NEQ_UQ));
   const Four deep = _mm256_and_pd(
       acts, _mm256_cmp_pd(separation, _mm256_mul_pd(_mm256_set1_pd(-2.0), slop), _CMP_LT_OQ));
 

@@ -17,11 +17,9 @@ inline bool centred_discs(const ContactPointState& point) {
   return point.anchor_a == AnchorKind::kCentredDisc && point.anchor_b == AnchorKind::kCentredDisc;
 }
 
-/// What a position pass reads besides the state it moves: the bodies' inertias, their state when
-/// the contacts were found, and the slop [m].
+/// What a position pass reads besides the state it moves: the bodies' inertias and the slop [m].
 struct DiscPositionInput {
   const BodyInertia& inertia;
-  const MotionState& detected;
   double slop;
 };
 

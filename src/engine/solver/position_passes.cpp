@@ -301,13 +301,13 @@ void PositionCorrection::correct_in(const Order& order, const ContactSet& contac
   for (bool deep = true; deep && iterations-- > 0;) {
     if constexpr (std::is_same_v<Order, ContactBatches>) {
       if (four_lanes()) {
-        deep = 0.0 != order.run(
-                          solve,
-                          [&](std::span<const std::uint32_t> independent) {
-                            return correct_independent(contacts, independent, solve,
-                                                       {inertia, detected, slop}, s);
-                          },
-                          ContactBatches::Visit{.by_levels = true});
+        deep = 0.0 !=
+               order.run(
+                   solve,
+                   [&](std::span<const std::uint32_t> independent) {
+                     return correct_independent(contacts, independent, solve, {inertia, slop}, s);
+                   },
+                   ContactBatches::Visit{.by_levels = true});
         continue;
       }
     }
