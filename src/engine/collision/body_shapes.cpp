@@ -1,29 +1,16 @@
 #include "engine/collision/body_shapes.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
-#include <limits>
 #include <stdexcept>
 #include <variant>
 
 #include "engine/capacity.hpp"
+#include "engine/collision/float_rounding.hpp"
 #include "engine/geometry/shape_extent.hpp"
 #include "engine/geometry/transform.hpp"
 
 namespace gp {
-
-namespace {
-
-// The float nearest above `value`, or equal to it.
-float rounded_up(double value) {
-  const auto nearest = static_cast<float>(value);
-  return static_cast<double>(nearest) >= value
-             ? nearest
-             : std::nextafter(nearest, std::numeric_limits<float>::infinity());
-}
-
-}  // namespace
 
 void BodyShapes::add(BodyId body, const Shape& local, double restitution, double friction,
                      bool moves) {
@@ -53,7 +40,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
     polygon_vertices_ += count;
   }
   const PackedGeometry packed(kept);
-  append(records_, {packed, body, moves, rounded_up(core_reach(packed)), restitution, friction});
+  append(records_, {packed, body, moves, float_above(core_reach(packed)), restitution, friction});
   if (restitution > 0.0) ++bouncing_;
 }
 

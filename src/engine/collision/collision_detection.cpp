@@ -42,10 +42,6 @@ constexpr std::size_t kParallelPairs = 1024;
 // each would be waited on.
 constexpr std::size_t kGapsAhead = 32;
 
-bool two_discs(const PackedGeometry& a, const PackedGeometry& b) {
-  return a.kind() == ShapeKind::kCircle && b.kind() == ShapeKind::kCircle;
-}
-
 // The centre gaps of the pairs of two discs among the first kGapsAhead of `pairs` into `gaps`,
 // each at its pair's place.
 void find_centre_gaps(const WorldShapes& world, std::span<const ShapePair> pairs,

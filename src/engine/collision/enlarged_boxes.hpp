@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 
+#include "engine/collision/float_rounding.hpp"
 #include "engine/geometry/aabb.hpp"
 
 namespace gp {
@@ -27,17 +28,8 @@ inline std::optional<EnlargedBox> enlarged_box(const Aabb& box) {
   for (const double side : sides) {
     if (!(std::abs(side) <= kLargest)) return std::nullopt;
   }
-  const auto down = [](double x) {
-    const auto f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity())
-                                      : f;
-  };
-  const auto up = [](double x) {
-    const auto f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity())
-                                      : f;
-  };
-  return EnlargedBox{down(box.min.x()), down(box.min.y()), up(box.max.x()), up(box.max.y())};
+  return EnlargedBox{float_below(box.min.x()), float_below(box.min.y()), float_above(box.max.x()),
+                     float_above(box.max.y())};
 }
 
 /// BroadphaseBoxes of enlarged boxes, shape i static when `fixed[i]` is non-zero.

@@ -250,9 +250,7 @@ ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double
   if (a.kind() == ShapeKind::kPolygon && b.kind() == ShapeKind::kPolygon) {
     return collide_polygons(a.polygon(), b.polygon(), margin);
   }
-  if (a.kind() == ShapeKind::kCircle && b.kind() == ShapeKind::kCircle) {
-    return collide_circles(a.circle(), b.circle(), margin);
-  }
+  if (two_discs(a, b)) return collide_circles(a.circle(), b.circle(), margin);
   return collide(a.view(), b.view(), margin);
 }
 

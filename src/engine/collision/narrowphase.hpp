@@ -23,6 +23,10 @@ ContactManifold collide(const GeometryView& a, const GeometryView& b, double mar
 /// The same for two shapes as WorldShapes packs them: two polygons (two boxes: a box pile's every
 /// pair) and two discs (a rain's) are collided without being viewed first.
 ContactManifold collide(const PackedGeometry& a, const PackedGeometry& b, double margin);
+/// Whether `a` and `b` are both discs, which collide() takes straight to their own collision.
+inline bool two_discs(const PackedGeometry& a, const PackedGeometry& b) {
+  return a.kind() == ShapeKind::kCircle && b.kind() == ShapeKind::kCircle;
+}
 /// How two discs' centres lie from each other: the part of their manifold whose square root and
 /// division take longest, which a caller colliding many pairs can find for several pairs ahead so
 /// that those overlap.
