@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <optional>
 
 #include "engine/capacity.hpp"
-#include "engine/collision/swept_boxes.hpp"
 #include "engine/threads.hpp"
 
 namespace gp {
@@ -16,20 +19,16 @@ namespace {
 constexpr std::size_t kParallelCount = 4096;
 constexpr std::size_t kPerTask = 1024;
 
-// Tells one list of pairs from another, but for a chance of 2⁻⁶⁴; a false match only keeps pairs
-// that the next call then finds outgrown.
-std::uint64_t fingerprint_of(const std::vector<ShapePair>& pairs) {
-  std::uint64_t h = pairs.size();
-  for (const ShapePair& p : pairs) {
-    h = (h ^ (std::uint64_t{p.first} << 32 | p.second)) * 0x9E3779B97F4A7C15ULL;
-    h ^= h >> 29;
-  }
-  return h;
-}
-
 bool holds(const Aabb& outer, const Aabb& inner) {
   return inner.min.x() >= outer.min.x() && inner.min.y() >= outer.min.y() &&
          inner.max.x() <= outer.max.x() && inner.max.y() <= outer.max.y();
+}
+
+// The enlarged copy of a shape's box. A static body's box never moves; a kinematic one's, which
+// moves, leaves its copy at its first move.
+std::optional<EnlargedBox> enlarged_copy(const Aabb& box, bool fixed) {
+  const double slack = fixed ? 0.0 : CandidatePairs::kSlack * (box.max - box.min).sum();
+  return enlarged_box(box.fattened(slack));
 }
 
 }  // namespace
@@ -49,7 +48,8 @@ const std::vector<ShapePair>& CandidatePairs::find(const BodyShapes& shapes,
   const SweptBoxes boxes(start, end, body_of_, dynamic);
   used_kept_ = false;
   if (keeping_) {
-    if (boxes_within_kept(boxes, same_bodies)) {
+    const std::size_t outside = boxes_outside_kept(boxes, same_bodies);
+    if (outside <= kRefreshedBoxes && (outside == 0 || refresh_kept(boxes))) {
       filter_kept();
       used_kept_ = true;
       // Kept pairs that last are a pile at rest: the broadphase's room is freed meanwhile, so
@@ -58,7 +58,7 @@ const std::vector<ShapePair>& CandidatePairs::find(const BodyShapes& shapes,
       return pairs_;
     }
     if (served_ >= kFewestServed) {
-      settle_needed_ = kSettledCalls;
+      calm_needed_ = kCalmCalls;
       keep_pairs(boxes);
       if (keeping_) {
         filter_kept();
@@ -66,38 +66,97 @@ const std::vector<ShapePair>& CandidatePairs::find(const BodyShapes& shapes,
       }
     } else {
       // Outgrown too soon: the bodies are on the move. Wait longer each time before keeping again.
-      settle_needed_ = std::min(2 * settle_needed_, kLongestSettling);
+      calm_needed_ = std::min(2 * calm_needed_, kLongestWait);
       forget_kept();
     }
   }
   broadphase_.find_pairs(boxes, pairs_);
   sort_and_drop_same_body(pairs_);
-  const std::uint64_t fingerprint = fingerprint_of(pairs_);
-  settled_calls_ = fingerprint == fingerprint_ ? settled_calls_ + 1 : 0;
-  fingerprint_ = fingerprint;
-  if (settled_calls_ >= settle_needed_) keep_pairs(boxes);
+  calm_calls_ = boxes_on_the_move(boxes, start) <= kRefreshedBoxes ? calm_calls_ + 1 : 0;
+  if (calm_calls_ >= calm_needed_) keep_pairs(boxes);
   return pairs_;
 }
 
+std::size_t CandidatePairs::boxes_on_the_move(const SweptBoxes& boxes, const WorldShapes& start) {
+  const std::size_t n = boxes.size();
+  return reduce_blocks(
+      n, kPerTask, n < kParallelCount, std::size_t{0},
+      [&](std::size_t first, std::size_t last, std::size_t moving) {
+        for (auto i = static_cast<std::uint32_t>(first); i < last; ++i) {
+          const Aabb at_start = start.bounds(i);
+          const double slack = kSlack * (at_start.max - at_start.min).sum();
+          moving += holds(at_start.fattened(kCalmTravel * slack), boxes.bounds(i)) ? 0 : 1;
+        }
+        return moving;
+      },
+      std::plus<>());
+}
+
 template <typename Boxes>
-bool CandidatePairs::boxes_within_kept(const Boxes& boxes, bool same_bodies) {
+std::size_t CandidatePairs::boxes_outside_kept(const Boxes& boxes, bool same_bodies) {
   const std::size_t n = boxes.size();
   reserve_for(grown_, n);
   grown_.resize(n);
   const bool comparable = same_bodies && enlarged_.size() == n;
-  // Every box grown, for filter_kept or the broadphase, even once one is found outside.
+  constexpr std::size_t kIncomparable = std::numeric_limits<std::size_t>::max();
+  // Every box grown, for filter_kept or the broadphase, even once the kept pairs cannot serve.
   return reduce_blocks(
-      n, kPerTask, n < kParallelCount, true,
-      [&](std::size_t first, std::size_t last, bool within) {
+      n, kPerTask, n < kParallelCount, std::size_t{0},
+      [&](std::size_t first, std::size_t last, std::size_t outside) {
         for (auto i = static_cast<std::uint32_t>(first); i < last; ++i) {
           const Aabb box = boxes.bounds(i);
           grown_[i] = box.fattened(half_margin_);
-          within = within && comparable && (fixed_[i] != 0) == boxes.is_static(i) &&
-                   holds(enlarged_[i].bounds(), box);
+          if (!comparable || ((fixed_[i] & kFixed) != 0) != boxes.is_static(i)) {
+            outside = kIncomparable;
+          } else if (outside != kIncomparable) {
+            const bool out = !holds(enlarged_[i].bounds(), box);
+            fixed_[i] = static_cast<std::uint8_t>((fixed_[i] & kFixed) | (out ? kOutside : 0));
+            outside += out ? 1 : 0;
+          }
         }
-        return within;
+        return outside;
       },
-      [](bool a, bool b) { return a && b; });
+      [](std::size_t a, std::size_t b) {
+        return a == kIncomparable || b == kIncomparable ? kIncomparable : a + b;
+      });
+}
+
+template <typename Boxes>
+bool CandidatePairs::refresh_kept(const Boxes& boxes) {
+  outside_.clear();
+  for (std::uint32_t i = 0; i < fixed_.size(); ++i) {
+    if ((fixed_[i] & kOutside) == 0) continue;
+    const std::optional<EnlargedBox> enlarged =
+        enlarged_copy(boxes.bounds(i), (fixed_[i] & kFixed) != 0);
+    if (!enlarged) return false;
+    enlarged_[i] = *enlarged;
+    append(outside_, i);
+  }
+  // The pairs the broadphase would find among the enlarged boxes (see keep_pairs) that hold a
+  // box outside: each such box against every other, a pair of two of them from the higher one.
+  const auto grown = [this](std::uint32_t i) {
+    return enlarged_[i].bounds().fattened(half_margin_);
+  };
+  refreshed_.clear();
+  for (const std::uint32_t i : outside_) {
+    const Aabb box = grown(i);
+    for (std::uint32_t j = 0; j < fixed_.size(); ++j) {
+      if (!grown(j).overlaps(box)) continue;
+      if (j == i || ((fixed_[j] & kOutside) != 0 && j > i)) continue;
+      if ((fixed_[i] & fixed_[j] & kFixed) != 0 || body_of_[i] == body_of_[j]) continue;
+      refreshed_.push_back({std::min(i, j), std::max(i, j)});
+    }
+  }
+  std::erase_if(kept_, [this](const ShapePair& p) {
+    return ((fixed_[p.first] | fixed_[p.second]) & kOutside) != 0;
+  });
+  std::sort(refreshed_.begin(), refreshed_.end());
+  const auto kept = static_cast<std::ptrdiff_t>(kept_.size());
+  reserve_for(kept_, kept_.size() + refreshed_.size());
+  kept_.insert(kept_.end(), refreshed_.begin(), refreshed_.end());
+  std::inplace_merge(kept_.begin(), kept_.begin() + kept, kept_.end());
+  for (const std::uint32_t i : outside_) fixed_[i] &= kFixed;
+  return true;
 }
 
 template <typename Boxes>
@@ -111,15 +170,11 @@ void CandidatePairs::keep_pairs(const Boxes& boxes) {
       n, kPerTask, n < kParallelCount, true,
       [&](std::size_t first, std::size_t last, bool all) {
         for (auto i = static_cast<std::uint32_t>(first); i < last; ++i) {
-          const Aabb box = boxes.bounds(i);
           const bool fixed = boxes.is_static(i);
-          // A static body's box never moves; a kinematic one's, which moves, finds its kept
-          // pairs outgrown at its first move.
-          const double slack = fixed ? 0.0 : kSlack * (box.max - box.min).sum();
-          const std::optional<EnlargedBox> enlarged = enlarged_box(box.fattened(slack));
+          const std::optional<EnlargedBox> enlarged = enlarged_copy(boxes.bounds(i), fixed);
           all = all && enlarged.has_value();
           if (enlarged) enlarged_[i] = *enlarged;
-          fixed_[i] = fixed ? 1 : 0;
+          fixed_[i] = fixed ? kFixed : 0;
         }
         return all;
       },
@@ -186,12 +241,14 @@ void CandidatePairs::sort_and_drop_same_body(std::vector<ShapePair>& pairs) {
 
 void CandidatePairs::forget_kept() {
   keeping_ = false;
-  settled_calls_ = 0;
+  calm_calls_ = 0;
   // Moved-from temporaries take the room with them: a scene on the move holds none of it.
   enlarged_ = std::vector<EnlargedBox>();
   fixed_ = std::vector<std::uint8_t>();
   grown_ = std::vector<Aabb>();
   kept_ = std::vector<ShapePair>();
+  outside_ = std::vector<std::uint32_t>();
+  refreshed_ = std::vector<ShapePair>();
   block_counts_ = std::vector<std::size_t>();
 }
 
