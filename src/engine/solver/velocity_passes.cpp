@@ -239,14 +239,19 @@ bool propagate_impacts(const ContactSet& contacts, const BodyShapes& shapes,
 
 namespace {
 
-// Into `k` where the contact set keeps it: a block made apart and copied in is read back with
-// wide loads that stall on the narrow stores that made it.
-void fill_normal_block(const BodyInertia& inertia, const Contact& c, const ContactPointState& p,
-                       const ContactPointState& q, NormalBlock& k) {
+// The diagonal and the coupling of `k`, a two-point contact's block, into where the contact set
+// keeps it: a block made apart and copied in is read back with wide loads that stall on the
+// narrow stores that made it.
+void fill_block_entries(const BodyInertia& inertia, const Contact& c, const ContactPointState& p,
+                        const ContactPointState& q, NormalBlock& k) {
   const DoublePair diagonal = 1.0 / DoublePair{p.normal_mass, q.normal_mass};
   k.k11 = diagonal[0];
   k.k22 = diagonal[1];
   k.k12 = normal_coupling(c, p, c, q, inertia);
+}
+
+// The inverse of `k` from its entries, or all 0 where it is not solvable.
+void invert_block(NormalBlock& k) {
   const double determinant = k.k11 * k.k22 - k.k12 * k.k12;
   // Box2D's bound on K's condition number, past which the block solve amplifies round-off.
   if (k.k11 * k.k11 < 1000.0 * determinant) {
@@ -271,7 +276,8 @@ double touching_gap(const ContactPreparation& in) {
   return in.settings.velocity_tolerance * in.h;
 }
 
-void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
+// A contact's points: their effective masses, targets and bounces.
+void prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
   const BodyInertia& inertia = in.inertia;
   const Contact& c = contacts[i];
   const Vec2 tangent = contact_tangent(c.normal);
@@ -284,7 +290,6 @@ void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPrepara
     p.tangent_mass = masses[1];
     p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in));
   }
-  if (c.count() == 2) fill_normal_block(inertia, c, points[0], points[1], contacts.block(c));
   // Without a shape that bounces, no point does, and its approach need not be measured.
   if (!contacts.keeps_bounce_velocities()) return;
   const std::span<double> bounces = contacts.bounce_velocities(c);
@@ -296,6 +301,25 @@ void prepare_contact(ContactSet& contacts, std::uint32_t i, const ContactPrepara
     bounces[k] = approach < -in.settings.restitution_threshold
                      ? contact_restitution(in.shapes, c) * approach
                      : 0.0;
+  }
+}
+
+// Each of `part`'s contacts prepared: its points, then the block of a two-point contact. Step by
+// step over all of them, each step's divisions independent from contact to contact, so that the
+// processor overlaps them rather than waiting on each contact's chain of three in turn.
+void prepare_part(ContactSet& contacts, std::span<const std::uint32_t> part,
+                  const ContactPreparation& in) {
+  for (const std::uint32_t i : part) prepare_points(contacts, i, in);
+  for (const std::uint32_t i : part) {
+    const Contact& c = contacts[i];
+    if (c.count() == 2) {
+      const std::span<const ContactPointState> points = contacts.points(c);
+      fill_block_entries(in.inertia, c, points[0], points[1], contacts.block(c));
+    }
+  }
+  for (const std::uint32_t i : part) {
+    const Contact& c = contacts[i];
+    if (c.count() == 2) invert_block(contacts.block(c));
   }
 }
 
@@ -316,7 +340,9 @@ void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const Body
                       const MotionState& before, double h, const Settings& settings) {
   const ContactPreparation in{shapes, inertia, before, h, settings};
   contacts.keep_bounce_velocities(shapes.any_bounce());
-  for (std::uint32_t i = 0; i < contacts.size(); ++i) prepare_contact(contacts, i, in);
+  for (std::uint32_t i = 0; i < contacts.size(); ++i) {
+    prepare_part(contacts, std::span<const std::uint32_t>(&i, 1), in);
+  }
 }
 
 void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionState& s) {
@@ -333,7 +359,7 @@ void prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
   batches.run_in_stretches([&](std::span<const std::uint32_t> stretch) {
     for (std::size_t k = 0; k < stretch.size(); k += kPreparedAtOnce) {
       const auto part = stretch.subspan(k, std::min(kPreparedAtOnce, stretch.size() - k));
-      for (const std::uint32_t i : part) prepare_contact(contacts, i, preparation);
+      prepare_part(contacts, part, preparation);
       for (const std::uint32_t i : part) warm_start_contact(contacts, i, preparation.inertia, s);
     }
   });
