@@ -106,11 +106,11 @@ std::size_t CandidatePairs::boxes_outside_kept(const Boxes& boxes, bool same_bod
         for (auto i = static_cast<std::uint32_t>(first); i < last; ++i) {
           const Aabb box = boxes.bounds(i);
           grown_[i] = box.fattened(half_margin_);
-          if (!comparable || ((fixed_[i] & kFixed) != 0) != boxes.is_static(i)) {
+          if (!comparable || ((flags_[i] & kFixed) != 0) != boxes.is_static(i)) {
             outside = kIncomparable;
           } else if (outside != kIncomparable) {
             const bool out = !holds(enlarged_[i].bounds(), box);
-            fixed_[i] = static_cast<std::uint8_t>((fixed_[i] & kFixed) | (out ? kOutside : 0));
+            flags_[i] = static_cast<std::uint8_t>((flags_[i] & kFixed) | (out ? kOutside : 0));
             outside += out ? 1 : 0;
           }
         }
@@ -124,10 +124,10 @@ std::size_t CandidatePairs::boxes_outside_kept(const Boxes& boxes, bool same_bod
 template <typename Boxes>
 bool CandidatePairs::refresh_kept(const Boxes& boxes) {
   outside_.clear();
-  for (std::uint32_t i = 0; i < fixed_.size(); ++i) {
-    if ((fixed_[i] & kOutside) == 0) continue;
+  for (std::uint32_t i = 0; i < flags_.size(); ++i) {
+    if ((flags_[i] & kOutside) == 0) continue;
     const std::optional<EnlargedBox> enlarged =
-        enlarged_copy(boxes.bounds(i), (fixed_[i] & kFixed) != 0);
+        enlarged_copy(boxes.bounds(i), (flags_[i] & kFixed) != 0);
     if (!enlarged) return false;
     enlarged_[i] = *enlarged;
     append(outside_, i);
@@ -140,22 +140,22 @@ bool CandidatePairs::refresh_kept(const Boxes& boxes) {
   refreshed_.clear();
   for (const std::uint32_t i : outside_) {
     const Aabb box = grown(i);
-    for (std::uint32_t j = 0; j < fixed_.size(); ++j) {
+    for (std::uint32_t j = 0; j < flags_.size(); ++j) {
       if (!grown(j).overlaps(box)) continue;
-      if (j == i || ((fixed_[j] & kOutside) != 0 && j > i)) continue;
-      if ((fixed_[i] & fixed_[j] & kFixed) != 0 || body_of_[i] == body_of_[j]) continue;
+      if (j == i || ((flags_[j] & kOutside) != 0 && j > i)) continue;
+      if ((flags_[i] & flags_[j] & kFixed) != 0 || body_of_[i] == body_of_[j]) continue;
       refreshed_.push_back({std::min(i, j), std::max(i, j)});
     }
   }
   std::erase_if(kept_, [this](const ShapePair& p) {
-    return ((fixed_[p.first] | fixed_[p.second]) & kOutside) != 0;
+    return ((flags_[p.first] | flags_[p.second]) & kOutside) != 0;
   });
   std::sort(refreshed_.begin(), refreshed_.end());
   const auto kept = static_cast<std::ptrdiff_t>(kept_.size());
   reserve_for(kept_, kept_.size() + refreshed_.size());
   kept_.insert(kept_.end(), refreshed_.begin(), refreshed_.end());
   std::inplace_merge(kept_.begin(), kept_.begin() + kept, kept_.end());
-  for (const std::uint32_t i : outside_) fixed_[i] &= kFixed;
+  for (const std::uint32_t i : outside_) flags_[i] &= kFixed;
   return true;
 }
 
@@ -164,8 +164,8 @@ void CandidatePairs::keep_pairs(const Boxes& boxes) {
   const std::size_t n = boxes.size();
   reserve_for(enlarged_, n);
   enlarged_.resize(n);
-  reserve_for(fixed_, n);
-  fixed_.resize(n);
+  reserve_for(flags_, n);
+  flags_.resize(n);
   const bool representable = reduce_blocks(
       n, kPerTask, n < kParallelCount, true,
       [&](std::size_t first, std::size_t last, bool all) {
@@ -174,7 +174,7 @@ void CandidatePairs::keep_pairs(const Boxes& boxes) {
           const std::optional<EnlargedBox> enlarged = enlarged_copy(boxes.bounds(i), fixed);
           all = all && enlarged.has_value();
           if (enlarged) enlarged_[i] = *enlarged;
-          fixed_[i] = fixed ? kFixed : 0;
+          flags_[i] = fixed ? kFixed : 0;
         }
         return all;
       },
@@ -184,7 +184,8 @@ void CandidatePairs::keep_pairs(const Boxes& boxes) {
     forget_kept();
     return;
   }
-  broadphase_.find_pairs(EnlargedBoxes{enlarged_, fixed_}, kept_);
+  // The flags hold kFixed alone here, as EnlargedBoxes reads a non-zero flag as static.
+  broadphase_.find_pairs(EnlargedBoxes{enlarged_, flags_}, kept_);
   sort_and_drop_same_body(kept_);
   keeping_ = true;
   served_ = 0;
@@ -244,7 +245,7 @@ void CandidatePairs::forget_kept() {
   calm_calls_ = 0;
   // Moved-from temporaries take the room with them: a scene on the move holds none of it.
   enlarged_ = std::vector<EnlargedBox>();
-  fixed_ = std::vector<std::uint8_t>();
+  flags_ = std::vector<std::uint8_t>();
   grown_ = std::vector<Aabb>();
   kept_ = std::vector<ShapePair>();
   outside_ = std::vector<std::uint32_t>();

@@ -55,7 +55,7 @@ class CandidatePairs {
   static constexpr int kLongestWait = 256;
 
  private:
-  /// Per shape in fixed_: its body is static, and (for the call under way) its box has left its
+  /// Per shape in flags_: its body is static, and (for the call under way) its box has left its
   /// enlarged copy.
   static constexpr std::uint8_t kFixed = 1;
   static constexpr std::uint8_t kOutside = 2;
@@ -86,7 +86,7 @@ class CandidatePairs {
   // of this call grown by margin / 2; and the pairs of the enlarged boxes, sorted. While they are
   // refreshed: the boxes outside, and their new pairs.
   std::vector<EnlargedBox> enlarged_;
-  std::vector<std::uint8_t> fixed_;
+  std::vector<std::uint8_t> flags_;
   std::vector<Aabb> grown_;
   std::vector<ShapePair> kept_;
   std::vector<std::uint32_t> outside_;
