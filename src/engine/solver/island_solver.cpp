@@ -164,32 +164,44 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
     double lightest = 0.0;  // as inverse masses [1/kg]
     double heaviest = std::numeric_limits<double>::infinity();
     bool at_rest = true;
-    bool held = true;  // of the contacts walked while at rest: only then does it count
+    bool held = true;  // of every point walked: it counts only where the island is at rest
   };
   const std::uint32_t first = islands.island_start[root];
   const std::size_t count = islands.island_end[root] - first;
   const auto walk = [&](std::size_t from, std::size_t to, Found found) {
+    // Whether the island is held counts only where it ends up at rest, and then every point was
+    // walked at rest: each point's test is taken whatever the points before it found, without a
+    // branch on them.
+    bool at_rest = found.at_rest;
+    bool held = found.held;
     for (std::size_t e = first + from; e < first + to; ++e) {
       // Neither at rest nor weighed: nothing further can change what the survey finds.
-      if (!found.at_rest && !weigh) break;
+      if (!at_rest && !weigh) break;
       const Contact& c = contacts[islands.order[e]];
-      for (const BodyId b : {c.body_a, c.body_b}) {
-        found.at_rest = found.at_rest && surveyed.resting[b] != 0;
-        const double inverse_mass = bodies.inertia.inverse_mass[b];
-        if (weigh && inverse_mass > 0.0) {
-          found.lightest = std::max(found.lightest, inverse_mass);
-          found.heaviest = std::min(found.heaviest, inverse_mass);
+      at_rest &= (surveyed.resting[c.body_a] & surveyed.resting[c.body_b]) != 0;
+      if (weigh) {
+        for (const BodyId b : {c.body_a, c.body_b}) {
+          const double inverse_mass = bodies.inertia.inverse_mass[b];
+          if (inverse_mass > 0.0) {
+            found.lightest = std::max(found.lightest, inverse_mass);
+            found.heaviest = std::min(found.heaviest, inverse_mass);
+          }
         }
       }
+      const Vec2 relative = surveyed.now.velocity[c.body_a] - surveyed.now.velocity[c.body_b];
+      const double spin_a = surveyed.now.angular_velocity[c.body_a];
+      const double spin_b = surveyed.now.angular_velocity[c.body_b];
       for (const ContactPointState& p : contacts.points(c)) {
         // Bodies overlapping by more than the position passes leave are about to be moved apart:
         // impulses solved exactly for where they are would not fit where they go.
-        found.at_rest = found.at_rest && p.depth <= limits.resting_depth;
-        found.held = found.held && (!found.at_rest || contact_normal_velocity(surveyed.now, c, p) -
-                                                              p.target_normal_velocity >=
-                                                          -limits.unheld_speed);
+        at_rest &= p.depth <= limits.resting_depth;
+        held &= velocity_along(relative, spin_a, spin_b, c.normal, p.normal_arm_a, p.normal_arm_b) -
+                    p.target_normal_velocity >=
+                -limits.unheld_speed;
       }
     }
+    found.at_rest = at_rest;
+    found.held = held;
     return found;
   };
   // Every one of a resting pile's points is read at every step: a large pile's on the threads.
