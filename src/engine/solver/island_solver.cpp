@@ -172,13 +172,11 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
     // Whether the island is held counts only where it ends up at rest, and then every point was
     // walked at rest: each point's test is taken whatever the points before it found, without a
     // branch on them.
-    bool at_rest = found.at_rest;
-    bool held = found.held;
     for (std::size_t e = first + from; e < first + to; ++e) {
       // Neither at rest nor weighed: nothing further can change what the survey finds.
-      if (!at_rest && !weigh) break;
+      if (!found.at_rest && !weigh) break;
       const Contact& c = contacts[islands.order[e]];
-      at_rest &= (surveyed.resting[c.body_a] & surveyed.resting[c.body_b]) != 0;
+      found.at_rest &= (surveyed.resting[c.body_a] & surveyed.resting[c.body_b]) != 0;
       if (weigh) {
         for (const BodyId b : {c.body_a, c.body_b}) {
           const double inverse_mass = bodies.inertia.inverse_mass[b];
@@ -188,20 +186,14 @@ IslandSurvey survey(const ContactSet& contacts, const ContactIslands& islands, s
           }
         }
       }
-      const Vec2 relative = surveyed.now.velocity[c.body_a] - surveyed.now.velocity[c.body_b];
-      const double spin_a = surveyed.now.angular_velocity[c.body_a];
-      const double spin_b = surveyed.now.angular_velocity[c.body_b];
       for (const ContactPointState& p : contacts.points(c)) {
         // Bodies overlapping by more than the position passes leave are about to be moved apart:
         // impulses solved exactly for where they are would not fit where they go.
-        at_rest &= p.depth <= limits.resting_depth;
-        held &= velocity_along(relative, spin_a, spin_b, c.normal, p.normal_arm_a, p.normal_arm_b) -
-                    p.target_normal_velocity >=
-                -limits.unheld_speed;
+        found.at_rest &= p.depth <= limits.resting_depth;
+        found.held &= contact_normal_velocity(surveyed.now, c, p) - p.target_normal_velocity >=
+                      -limits.unheld_speed;
       }
     }
-    found.at_rest = at_rest;
-    found.held = held;
     return found;
   };
   // Every one of a resting pile's points is read at every step: a large pile's on the threads.
