@@ -48,12 +48,13 @@ BodyId Space::add_body(const BodyDef& def) {
   append(self.removed, char{0});
   append(c.inertia.inverse_mass, dynamic ? 1.0 / mass.mass : 0.0);
   append(c.inertia.inverse_moment, rotates ? 1.0 / mass.moment : 0.0);
-  // Only a space that sleeps keeps its bodies' sleep: 28 bytes a body that others do not hold.
+  // Only a space that sleeps keeps its bodies' sleep: 29 bytes a body that others do not hold.
   if (c.settings.sleep) {
     append(c.asleep_inertia.inverse_mass, 0.0);
     append(c.asleep_inertia.inverse_moment, 0.0);
     append(c.still_for, 0.0);
     append(c.sleep_island, kAwake);
+    append(c.placed_asleep, char{0});
   }
   const Transform frame(def.position, def.angle);
   append(c.state.position, frame.apply(mass.local_center));

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "engine/geometry/world_bounds.hpp"
 #include "engine/sleep/sleeping.hpp"
 #include "engine/space_impl.hpp"
 #include "gamephysics/gamephysics.hpp"
@@ -118,6 +119,40 @@ TEST_CASE("A sliding box that reaches a sleeping one wakes it, and momentum is c
   const double p = space.state(still).velocity.x() + space.state(moving).velocity.x();
   CHECK_THAT(p, WithinAbs(1.0, 1e-9));
   CHECK(space.state(still).velocity.x() > 0.4);
+}
+
+// Whether the box of the box's shape as the step placed it (world_start, at the start of the last
+// step) is the one of the shape placed afresh where the box was then.
+bool placed_where_it_was(const gp::Space& space, gp::BodyId box, const gp::BodyState& before) {
+  const gp::StepContext& c = gp::SpaceInternals::context(space);
+  const auto [shape, last] = c.shapes.of_body(box);
+  const gp::Aabb kept = c.world_start.bounds(shape);
+  const gp::Aabb fresh =
+      gp::placed_bounds(c.shapes[shape].local, gp::Transform(before.position, before.angle));
+  return kept.min == fresh.min && kept.max == fresh.max;
+}
+
+TEST_CASE("A sleeping body's shapes are not placed again, and are once it moves",
+          "[FR:Determine-Collisions]") {
+  gp::Space space(sleepy());
+  space.add_body(ground());
+  const auto box = space.add_body(resting_box("box", 0.0));
+  run(space, 1.0);
+  REQUIRE(asleep(space, box));
+  // Asleep for half a second: the shape kept where the box fell asleep is where it still is.
+  gp::BodyState before = space.state(box);
+  space.step(kStep);
+  CHECK(placed_where_it_was(space, box, before));
+  CHECK(gp::placed_asleep(gp::SpaceInternals::context(space), box));
+  // Woken by an impulse, it slides away; each step places it where that step started.
+  space.apply_impulse(box, {2.0, 0.0}, space.state(box).position);
+  CHECK_FALSE(gp::placed_asleep(gp::SpaceInternals::context(space), box));
+  for (int k = 0; k < 5; ++k) {
+    before = space.state(box);
+    space.step(kStep);
+    CHECK(placed_where_it_was(space, box, before));
+  }
+  CHECK(space.state(box).position.x() > before.position.x());
 }
 
 TEST_CASE("A kinematic body moving into a sleeping island wakes it", "[FR:Simulation-Space]") {

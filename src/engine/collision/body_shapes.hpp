@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <utility>
 #include <variant>
 #include <vector>
 
@@ -70,37 +69,38 @@ class BodyShapes {
   /// down by as many, and `body` keeps an empty range.
   Range remove_body(BodyId body);
 
+  /// The `unmoved` of place and bound_moved that leaves no body out.
+  struct NoneUnmoved {
+    bool operator()(BodyId) const { return false; }
+  };
+
   /// Places every moving shape, whole in WorldShapes or its box alone in WorldBounds, by its
   /// body's centre of mass `position` and orientation `angle`, indexed by body id (static shapes
-  /// once, on the first call).
-  template <typename Placements>
-  void place(std::span<const Vec2> position, std::span<const double> angle,
-             Placements& world) const {
-    place([&](BodyId body) { return std::pair(position[body], angle[body]); }, world);
-  }
-  /// The same with the centre of mass and orientation of each body given by `pose(body)`, a
-  /// std::pair<Vec2, double>, for poses computed as they are needed rather than stored.
-  template <typename Pose, typename Placements>
-  void place(const Pose& pose, Placements& world) const;
+  /// once, on the first call). The shapes of a body for which `unmoved(body)` is true are left
+  /// where the last call placed them (all are placed on the first call).
+  template <typename Placements, typename Unmoved = NoneUnmoved>
+  void place(std::span<const Vec2> position, std::span<const double> angle, Placements& world,
+             const Unmoved& unmoved = {}) const;
 
   /// Bounds in `end` every moving shape at the end of a step of h [s] along `path`, from the
   /// centres of mass `from` [m, by body id] at which `start` placed the shapes: a disc about its
   /// centre of mass exactly where `path.position(body, h)` [m] puts it, as it needs no sine, every
   /// other shape by its box in `start` moved and grown for `path.turn(body, h)` [rad]
-  /// (moved_bounds), which needs none either. (`Path`: Ballistic's interface.)
-  template <typename Path>
+  /// (moved_bounds), which needs none either. (`Path`: Ballistic's interface.) The shapes of a
+  /// body for which `unmoved(body)` is true keep the bounds of the last call, as in place.
+  template <typename Path, typename Unmoved = NoneUnmoved>
   void bound_moved(const WorldShapes& start, std::span<const Vec2> from, const Path& path, double h,
-                   WorldBounds& end) const;
+                   WorldBounds& end, const Unmoved& unmoved = {}) const;
 
  private:
   void lay_out(WorldShapes& world) const {
     world.lay_out(records_.size(), polygons_.size(), polygon_vertices_);
   }
   void lay_out(WorldBounds& world) const { world.lay_out(records_.size()); }
-  /// Calls `work(record, index)` for each shape that `world` must place: the moving ones, and
-  /// every one at the first placement, which lays `world` out.
-  template <typename Placements, typename Work>
-  void each_to_place(Placements& world, const Work& work) const;
+  /// Calls `work(record, index)` for each shape that `world` must place: the moving ones but
+  /// those of `unmoved` bodies, and every one at the first placement, which lays `world` out.
+  template <typename Placements, typename Unmoved, typename Work>
+  void each_to_place(Placements& world, const Unmoved& unmoved, const Work& work) const;
 
   std::vector<ShapeRecord> records_;
   // Per polygon, its vertices then its normals: a block, which stays where it is as shapes are
@@ -113,13 +113,14 @@ class BodyShapes {
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 
-template <typename Placements, typename Work>
-void BodyShapes::each_to_place(Placements& world, const Work& work) const {
+template <typename Placements, typename Unmoved, typename Work>
+void BodyShapes::each_to_place(Placements& world, const Unmoved& unmoved, const Work& work) const {
   const bool first = world.size() != records_.size();
   if (first) lay_out(world);
   const auto place_shapes = [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      if (records_[i].moves || first) work(records_[i], i);
+      const ShapeRecord& r = records_[i];
+      if ((r.moves && !unmoved(r.body)) || first) work(r, i);
     }
   };
   // Once placed, each shape has its own room in `world`: the shapes are placed side by side.
@@ -127,18 +128,18 @@ void BodyShapes::each_to_place(Placements& world, const Work& work) const {
   for_blocks(records_.size(), kShapesPerTask, first, place_shapes);
 }
 
-template <typename Pose, typename Placements>
-void BodyShapes::place(const Pose& pose, Placements& world) const {
-  each_to_place(world, [&](const ShapeRecord& r, std::size_t i) {
-    const auto [position, angle] = pose(r.body);
-    world.place(i, r.local, r.frame(position, angle));
+template <typename Placements, typename Unmoved>
+void BodyShapes::place(std::span<const Vec2> position, std::span<const double> angle,
+                       Placements& world, const Unmoved& unmoved) const {
+  each_to_place(world, unmoved, [&](const ShapeRecord& r, std::size_t i) {
+    world.place(i, r.local, r.frame(position[r.body], angle[r.body]));
   });
 }
 
-template <typename Path>
+template <typename Path, typename Unmoved>
 void BodyShapes::bound_moved(const WorldShapes& start, std::span<const Vec2> from, const Path& path,
-                             double h, WorldBounds& end) const {
-  each_to_place(end, [&](const ShapeRecord& r, std::size_t i) {
+                             double h, WorldBounds& end, const Unmoved& unmoved) const {
+  each_to_place(end, unmoved, [&](const ShapeRecord& r, std::size_t i) {
     const Vec2 to = path.position(r.body, h);
     if (r.centred_disc()) {
       end.place(i, r.local, Transform(to));

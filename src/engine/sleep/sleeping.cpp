@@ -7,12 +7,18 @@
 
 namespace gp {
 
+void note_placed_asleep(StepContext& c) {
+  if (c.placed_asleep.empty()) return;
+  for (BodyId j : c.forces.bodies()) c.placed_asleep[j] = asleep(c, j) ? 1 : 0;
+}
+
 void wake_island(StepContext& c, BodyId body) {
   if (!asleep(c, body)) return;
   const std::uint32_t island = c.sleep_island[body];
   for (BodyId j = 0; j < c.sleep_island.size(); ++j) {
     if (c.sleep_island[j] != island) continue;
     c.sleep_island[j] = kAwake;
+    c.placed_asleep[j] = 0;
     c.dynamic[j] = 1;
     c.inertia.inverse_mass[j] = c.asleep_inertia.inverse_mass[j];
     c.inertia.inverse_moment[j] = c.asleep_inertia.inverse_moment[j];

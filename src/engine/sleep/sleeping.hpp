@@ -22,6 +22,15 @@ inline bool asleep(const StepContext& c, BodyId body) {
   return !c.sleep_island.empty() && c.sleep_island[body] != kAwake;
 }
 
+/// Whether `body` has slept since the shapes were last placed (world_start, end_bounds): they
+/// are still where it sleeps, as a sleeping body keeps its place.
+inline bool placed_asleep(const StepContext& c, BodyId body) {
+  return !c.placed_asleep.empty() && c.placed_asleep[body] != 0;
+}
+
+/// Notes, once the shapes are placed, the bodies placed asleep.
+void note_placed_asleep(StepContext& c);
+
 /// Wakes every body of the island `body` sleeps in; nothing if it is awake.
 void wake_island(StepContext& c, BodyId body);
 

@@ -47,20 +47,27 @@ std::string count(std::size_t n, const std::string& what) {
 // their start, their boxes at their end, and the candidate pairs of the boxes swept between.
 bool sweep(StepContext& c, StepMechanisms& m) {
   const PathShape shape = c.integrator->path_under_constant_acceleration();
-  if (c.forces.constant()) {
+  const bool constant = c.forces.constant();
+  if (constant) {
     c.motion.emplace(c.start, StepAccelerations(c.forces, c.dynamic), shape, c.h);
   } else {
     c.varying_acceleration.resize(c.state.position.size());
     c.forces.evaluate(c.time, c.start, c.varying_acceleration);
     c.motion.emplace(c.start, StepAccelerations(c.varying_acceleration), shape, c.h);
   }
-  c.shapes.place(c.start.position, c.start.angle, c.world_start);
+  // A body that slept when its shapes were last placed has not moved since: they stay where
+  // they are. Its path is still too under constant forces, where a sleeping body has no
+  // acceleration; evaluated forces may give it one.
+  const auto unmoved = [&c](BodyId b) { return placed_asleep(c, b); };
+  const auto unmoved_path = [&c, constant](BodyId b) { return constant && placed_asleep(c, b); };
+  c.shapes.place(c.start.position, c.start.angle, c.world_start, unmoved);
   // Boxes swept along the ballistic path catch a fast body wherever it is during the step. The
   // path covers every body: kinematic and static ones have no acceleration, so it ends where
   // the kinematic stage moves them, and static ones where they are.
   const Ballistic& path = *c.motion;
   const double h = c.h;
-  c.shapes.bound_moved(c.world_start, c.start.position, path, h, c.end_bounds);
+  c.shapes.bound_moved(c.world_start, c.start.position, path, h, c.end_bounds, unmoved_path);
+  note_placed_asleep(c);
   c.pairs = m.detection.candidate_pairs(c.shapes, c.dynamic, c.world_start, c.end_bounds);
   return true;
 }

@@ -65,6 +65,8 @@ struct StepContext {
   std::vector<double> still_for;            ///< s moved slower than the sleep thresholds
   std::vector<std::uint32_t> sleep_island;  ///< kAwake, or the island the body sleeps in
   BodyInertia asleep_inertia;               ///< what a sleeping body wakes up with
+  /// 1 for a body asleep when world_start and end_bounds last placed its shapes, and since.
+  std::vector<char> placed_asleep;
 
   // What the step reports.
   std::vector<Impact> impacts;  ///< resolved at their time of impact during the step
