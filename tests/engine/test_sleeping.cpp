@@ -155,6 +155,35 @@ TEST_CASE("A sleeping body's shapes are not placed again, and are once it moves"
   CHECK(space.state(box).position.x() > before.position.x());
 }
 
+TEST_CASE("A space whose every body sleeps stands still: its steps advance the clock alone",
+          "[FR:Simulation-Space]") {
+  gp::Space space(sleepy());
+  space.add_body(ground());
+  const auto left = space.add_body(resting_box("left", -2.0));
+  const auto right = space.add_body(resting_box("right", 2.0));
+  const gp::StepRunner& runner = gp::SpaceInternals::runner(space);
+  run(space, 0.6);
+  REQUIRE(asleep(space, left));
+  REQUIRE(asleep(space, right));
+  const gp::BodyState held = space.state(right);
+  // Asleep since about 0.5 s: the step after they fell asleep emptied the contacts.
+  const std::uint64_t passes = runner.local_passes() + runner.sub_steps();
+  const std::uint64_t still = runner.still_steps();
+  CHECK(still > 0);
+  const double t0 = space.time();
+  for (int k = 0; k < 50; ++k) space.step(kStep);
+  CHECK(runner.still_steps() == still + 50);
+  CHECK(runner.local_passes() + runner.sub_steps() == passes);
+  CHECK_THAT(space.time() - t0, WithinAbs(50 * kStep, 1e-12));
+  CHECK(space.state(right).position == held.position);
+  // An impulse wakes one island; the other sleeps on, and the space moves again.
+  space.apply_impulse(left, {2.0, 0.0}, space.state(left).position);
+  space.step(kStep);
+  CHECK(runner.still_steps() == still + 50);
+  CHECK_THAT(space.state(left).velocity.x(), WithinAbs(2.0, 1e-9));
+  CHECK(asleep(space, right));
+}
+
 TEST_CASE("A kinematic body moving into a sleeping island wakes it", "[FR:Simulation-Space]") {
   gp::Space space(sleepy());
   space.add_body(ground());

@@ -12,6 +12,15 @@ void note_placed_asleep(StepContext& c) {
   for (BodyId j : c.forces.bodies()) c.placed_asleep[j] = asleep(c, j) ? 1 : 0;
 }
 
+bool stands_still(const StepContext& c) {
+  if (c.sleep_island.empty() || !c.contacts.empty() || !c.warm_starts.empty()) return false;
+  for (BodyId k : c.kinematic) {
+    if (c.state.velocity[k] != Vec2::Zero() || c.state.angular_velocity[k] != 0.0) return false;
+  }
+  const std::vector<BodyId>& bodies = c.forces.bodies();
+  return std::all_of(bodies.begin(), bodies.end(), [&c](BodyId j) { return asleep(c, j); });
+}
+
 void wake_island(StepContext& c, BodyId body) {
   if (!asleep(c, body)) return;
   const std::uint32_t island = c.sleep_island[body];

@@ -31,6 +31,11 @@ inline bool placed_asleep(const StepContext& c, BodyId body) {
 /// Notes, once the shapes are placed, the bodies placed asleep.
 void note_placed_asleep(StepContext& c);
 
+/// Whether the space stands still: every dynamic body sleeps, no kinematic body moves, and no
+/// contact or warm start is left. Every stage of a step would then leave the state as it is, and
+/// the step only advances the clock.
+bool stands_still(const StepContext& c);
+
 /// Wakes every body of the island `body` sleeps in; nothing if it is awake.
 void wake_island(StepContext& c, BodyId body);
 

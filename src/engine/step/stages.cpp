@@ -303,7 +303,9 @@ constexpr std::array kStages{
             return "islands whose bodies all moved slower than " +
                    std::to_string(c.settings.sleep_speed) + " m/s and " +
                    std::to_string(c.settings.sleep_angular_speed) + " rad/s for " +
-                   std::to_string(c.settings.time_to_sleep) + " s";
+                   std::to_string(c.settings.time_to_sleep) +
+                   " s; once every body sleeps and "
+                   "nothing moves, a step runs no stage and advances the clock alone";
           },
           fall_asleep},
     Stage{"impacts at the end of the sub-step", "IM:col2D GD:impulse", kSubStepPass, collides,

@@ -13,6 +13,13 @@ StepRunner::StepRunner(const Settings& settings)
 void StepRunner::step(StepContext& c, double dt) {
   c.impacts.clear();
   c.impacts_this_step = 0;
+  // Settled piles asleep cost nothing: the step would leave them as they are.
+  if (stands_still(c)) {
+    ++still_steps_;
+    begin_pass(c, dt);
+    end_pass(c);
+    return;
+  }
   if (runs_local_pass(c) && run_pass(c, kLocalPass, dt) > 0.0) return;
   c.impacts.clear();
   c.impacts_this_step = 0;
@@ -33,12 +40,7 @@ void StepRunner::step(StepContext& c, double dt) {
 
 double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
   ++(pass == kLocalPass ? local_passes_ : sub_steps_);
-  c.h = h;
-  c.start = c.state;
-  c.impact_pairs.clear();
-  // A local pass that could not finish may have handed impacts over as speculative contacts:
-  // they were made for its own step, and their pairs' impacts are the sub-steps' to find now.
-  c.speculative_contacts.clear();
+  begin_pass(c, h);
   const std::span<const Stage> stages = step_stages();
   for (std::size_t i = 0; i < stages.size(); ++i) {
     const Stage& stage = stages[i];
@@ -53,9 +55,22 @@ double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
     }
     if (!finished) return 0.0;
   }
+  end_pass(c);
+  return c.h;
+}
+
+void StepRunner::begin_pass(StepContext& c, double h) {
+  c.h = h;
+  c.start = c.state;
+  c.impact_pairs.clear();
+  // A local pass that could not finish may have handed impacts over as speculative contacts:
+  // they were made for its own step, and their pairs' impacts are the sub-steps' to find now.
+  c.speculative_contacts.clear();
+}
+
+void StepRunner::end_pass(StepContext& c) {
   c.time += c.h;
   c.previous_h = c.h;
-  return c.h;
 }
 
 std::vector<PipelineStage> StepRunner::pipeline(const StepContext& c) const {

@@ -29,11 +29,16 @@ class StepRunner {
   void time_stages(bool on) { timing_ = on; }
   std::uint64_t local_passes() const { return local_passes_; }
   std::uint64_t sub_steps() const { return sub_steps_; }
+  /// Steps the space stood still through (stands_still), which ran no stage.
+  std::uint64_t still_steps() const { return still_steps_; }
 
  private:
   /// Runs the stages of `pass` over a sub-step of h [s] from the current state; the time it
   /// advanced [s], or 0 when a local pass cannot finish (having changed no state).
   double run_pass(StepContext& c, Pass pass, double h);
+  /// What every pass over h [s] does before its stages, and after them.
+  static void begin_pass(StepContext& c, double h);
+  static void end_pass(StepContext& c);
 
   StepMechanisms mechanisms_;
   std::vector<std::uint64_t> stage_runs_;
@@ -41,6 +46,7 @@ class StepRunner {
   bool timing_ = false;
   std::uint64_t local_passes_ = 0;
   std::uint64_t sub_steps_ = 0;
+  std::uint64_t still_steps_ = 0;
 };
 
 }  // namespace gp
