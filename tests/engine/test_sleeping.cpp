@@ -176,12 +176,21 @@ TEST_CASE("A space whose every body sleeps stands still: its steps advance the c
   CHECK(runner.local_passes() + runner.sub_steps() == passes);
   CHECK_THAT(space.time() - t0, WithinAbs(50 * kStep, 1e-12));
   CHECK(space.state(right).position == held.position);
+  // Standing still, the space holds no room for contacts.
+  CHECK(gp::SpaceInternals::context(space).contacts.empty());
   // An impulse wakes one island; the other sleeps on, and the space moves again.
   space.apply_impulse(left, {2.0, 0.0}, space.state(left).position);
   space.step(kStep);
   CHECK(runner.still_steps() == still + 50);
   CHECK_THAT(space.state(left).velocity.x(), WithinAbs(2.0, 1e-9));
   CHECK(asleep(space, right));
+  // It slides into the other, whose contact is found afresh: equal masses, C_R = 0, no friction,
+  // they move on together at half its speed.
+  run(space, 3.0);
+  CHECK_FALSE(asleep(space, right));
+  const double p = space.state(left).velocity.x() + space.state(right).velocity.x();
+  CHECK_THAT(p, WithinAbs(2.0, 1e-9));
+  CHECK(space.state(right).velocity.x() > 0.9);
 }
 
 TEST_CASE("A kinematic body moving into a sleeping island wakes it", "[FR:Simulation-Space]") {

@@ -240,6 +240,14 @@ void CandidatePairs::sort_and_drop_same_body(std::vector<ShapePair>& pairs) {
   pair_order_.sort(pairs, static_cast<std::uint32_t>(body_of_.size()));
 }
 
+void CandidatePairs::release() {
+  forget_kept();
+  calm_needed_ = kCalmCalls;
+  broadphase_.release();
+  pairs_ = std::vector<ShapePair>();
+  body_of_ = std::vector<BodyId>();
+}
+
 void CandidatePairs::forget_kept() {
   keeping_ = false;
   calm_calls_ = 0;

@@ -36,6 +36,9 @@ class CandidatePairs {
 
   /// Whether the last find filtered kept pairs rather than asking the broadphase.
   bool kept_pairs_used() const { return used_kept_; }
+  /// Forgets the pairs, kept or found, and frees the room they and the broadphase hold, for a
+  /// caller that will not call for a while; the next call finds the pairs as the first did.
+  void release();
 
   /// A box is enlarged by this fraction of its width plus its height, on every side (0.1 m for
   /// a unit box, Box2D's margin), when its dynamic body's pairs are kept.

@@ -112,6 +112,13 @@ Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const C
   return c;
 }
 
+void CollisionDetection::release() {
+  candidates_.release();
+  manifolds_ = std::vector<ContactManifold>();
+  counts_ = std::vector<std::uint8_t>();
+  slots_ = std::vector<ContactSlot>();
+}
+
 void CollisionDetection::find_contacts(StepContext& ctx) {
   const BodyShapes& shapes = ctx.shapes;
   const WorldShapes& world = ctx.world_start;

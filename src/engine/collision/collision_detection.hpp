@@ -41,6 +41,9 @@ class CollisionDetection {
   /// starts with their impulses times the warm-start scale. Marks in the context's touching_pairs
   /// each pair whose contact touches.
   void find_contacts(StepContext& ctx);
+  /// Frees the room of the candidate pairs (CandidatePairs::release) and of the manifolds, for a
+  /// space that will find none for a while.
+  void release();
 
   double margin() const { return margin_; }
 

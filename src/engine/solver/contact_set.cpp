@@ -62,6 +62,16 @@ void ContactSet::fit_room() {
   fit(blocks_, block_count_);
 }
 
+void ContactSet::release() {
+  clear();
+  grown_ = false;
+  // Moved-from temporaries take the room with them.
+  contacts_ = std::vector<Contact>();
+  points_ = std::vector<ContactPointState>();
+  blocks_ = std::vector<NormalBlock>();
+  bounces_ = std::vector<double>();
+}
+
 void ContactSet::keep_bounce_velocities(bool keep) {
   keeps_bounces_ = keep;
   if (!keep) {

@@ -63,6 +63,9 @@ class ContactSet {
   /// that finds a pile's contacts from none doubles them rather than copying them at every
   /// eighth more, and memory per body counts the room kept.
   void fit_room();
+  /// Empties the set and frees the room of its arrays, for a space that will find no contacts
+  /// for a while (one standing still).
+  void release();
 
   /// The block of a two-point contact, filled in where it is kept.
   const NormalBlock& block(const Contact& c) const { return blocks_[c.block]; }

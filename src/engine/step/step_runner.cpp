@@ -13,13 +13,17 @@ StepRunner::StepRunner(const Settings& settings)
 void StepRunner::step(StepContext& c, double dt) {
   c.impacts.clear();
   c.impacts_this_step = 0;
-  // Settled piles asleep cost nothing: the step would leave them as they are.
+  // Settled piles asleep cost nothing: the step would leave them as they are, and they hold no
+  // room for the contacts they no longer have.
   if (stands_still(c)) {
+    if (!standing_still_) release_room(c);
+    standing_still_ = true;
     ++still_steps_;
     begin_pass(c, dt);
     end_pass(c);
     return;
   }
+  standing_still_ = false;
   if (runs_local_pass(c) && run_pass(c, kLocalPass, dt) > 0.0) return;
   c.impacts.clear();
   c.impacts_this_step = 0;
@@ -66,6 +70,15 @@ void StepRunner::begin_pass(StepContext& c, double h) {
   // A local pass that could not finish may have handed impacts over as speculative contacts:
   // they were made for its own step, and their pairs' impacts are the sub-steps' to find now.
   c.speculative_contacts.clear();
+}
+
+void StepRunner::release_room(StepContext& c) {
+  c.contacts.release();
+  c.speculative_contacts.release();
+  c.warm_starts = std::vector<WarmStart>();
+  c.touching_pairs = std::vector<std::uint8_t>();
+  c.pairs = {};
+  mechanisms_.detection.release();
 }
 
 void StepRunner::end_pass(StepContext& c) {

@@ -39,6 +39,9 @@ class StepRunner {
   /// What every pass over h [s] does before its stages, and after them.
   static void begin_pass(StepContext& c, double h);
   static void end_pass(StepContext& c);
+  /// Frees the room a space standing still does not use: its contacts', warm starts', candidate
+  /// pairs' and manifolds'. A step that moves again finds them as a first step does.
+  void release_room(StepContext& c);
 
   StepMechanisms mechanisms_;
   std::vector<std::uint64_t> stage_runs_;
@@ -47,6 +50,7 @@ class StepRunner {
   std::uint64_t local_passes_ = 0;
   std::uint64_t sub_steps_ = 0;
   std::uint64_t still_steps_ = 0;
+  bool standing_still_ = false;  // at the last step
 };
 
 }  // namespace gp
