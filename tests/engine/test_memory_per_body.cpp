@@ -2,6 +2,7 @@
 // from two sizes of the same scene so that what does not grow with the bodies cancels. The issue
 // asks for at most 1 KiB per body; the engine holds 939 B. The contact constraints (about two per
 // disc, 136 bytes each with one point) are the largest part, about 0.4 KiB with their warm starts.
+// A pile of boxes asleep holds no room for its contacts, which an awake one needs.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -52,6 +53,47 @@ TEST_CASE("A settled heap of discs holds at most 1 KiB of heap per disc", "[FR:S
   const double per_body = static_cast<double>(settled_heap(600) - settled_heap(200)) / 400.0;
   INFO("heap per body: " << per_body << " B");
   CHECK(per_body <= 1024.0);
+}
+
+// Heap held by a space of a pyramid of `rows` rows of unit boxes, with sleep on or off, after two
+// seconds: settled, and with sleep on asleep [bytes].
+std::size_t pyramid_heap(int rows, bool sleep) {
+  const std::size_t before = gp::test::heap_in_use();
+  gp::Settings settings;
+  settings.gravity = {0.0, -9.81};
+  settings.sleep = sleep;
+  gp::Space space(settings);
+  gp::BodyDef ground;
+  ground.name = "ground";
+  ground.type = gp::BodyType::Static;
+  ground.position = {0.0, -0.5};
+  ground.shapes.push_back({gp::Shape::box(60.0, 1.0), 0.0, 0.6, 1.0});
+  space.add_body(ground);
+  for (int row = 0; row < rows; ++row) {
+    for (int k = 0; k < rows - row; ++k) {
+      gp::BodyDef def;
+      def.name = std::to_string(row * rows + k).insert(0, 1, 'b');
+      def.position = {1.05 * (k - 0.5 * (rows - row - 1)), 0.5 + row};
+      def.shapes.push_back({gp::Shape::box(1.0, 1.0), 0.0, 0.6, 1.0});
+      space.add_body(def);
+    }
+  }
+  for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
+  return gp::test::heap_in_use() - before;
+}
+
+TEST_CASE("A pile of boxes asleep holds no room for its contacts: under 1 KiB of heap a box",
+          "[FR:Simulation-Space]") {
+  // 210 boxes less 55: what does not grow with the boxes cancels.
+  const auto per_box = [](bool sleep) {
+    return static_cast<double>(pyramid_heap(20, sleep) - pyramid_heap(10, sleep)) / 155.0;
+  };
+  const double asleep = per_box(true);
+  const double awake = per_box(false);
+  INFO("heap per box asleep: " << asleep << " B, awake: " << awake << " B");
+  CHECK(asleep <= 1024.0);
+  // Awake, its contacts' room is more than half of what a box holds.
+  CHECK(awake > 1.5 * asleep);
 }
 
 }  // namespace test_memory_per_body
