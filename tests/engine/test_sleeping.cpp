@@ -50,6 +50,16 @@ void run(gp::Space& space, double seconds) {
   for (int k = 0; k < static_cast<int>(seconds / kStep + 0.5); ++k) space.step(kStep);
 }
 
+// Adds the ground and a box resting on it, and runs `space` until the box has slept for about half
+// a second; the box.
+gp::BodyId box_asleep(gp::Space& space) {
+  space.add_body(ground());
+  const auto box = space.add_body(resting_box("box", 0.0));
+  run(space, 1.0);
+  REQUIRE(asleep(space, box));
+  return box;
+}
+
 TEST_CASE("A box at rest falls asleep after time_to_sleep and is then held exactly still",
           "[FR:Simulation-Space]") {
   gp::Space space(sleepy());
@@ -90,10 +100,7 @@ TEST_CASE("Without sleep, nothing sleeps and the sleep stages are not needed",
 TEST_CASE("An impulse wakes a sleeping body, which then moves by J/m (DD:impulseV)",
           "[FR:Simulation-Space][via:DD:impulseV]") {
   gp::Space space(sleepy());
-  space.add_body(ground());
-  const auto box = space.add_body(resting_box("box", 0.0));
-  run(space, 1.0);
-  REQUIRE(asleep(space, box));
+  const auto box = box_asleep(space);
   const double x0 = space.state(box).position.x();
   space.apply_impulse(box, {2.0, 0.0}, space.state(box).position);
   CHECK_FALSE(asleep(space, box));
@@ -135,10 +142,7 @@ bool placed_where_it_was(const gp::Space& space, gp::BodyId box, const gp::BodyS
 TEST_CASE("A sleeping body's shapes are not placed again, and are once it moves",
           "[FR:Determine-Collisions]") {
   gp::Space space(sleepy());
-  space.add_body(ground());
-  const auto box = space.add_body(resting_box("box", 0.0));
-  run(space, 1.0);
-  REQUIRE(asleep(space, box));
+  const auto box = box_asleep(space);
   // Asleep for half a second: the shape kept where the box fell asleep is where it still is.
   gp::BodyState before = space.state(box);
   space.step(kStep);
@@ -195,10 +199,7 @@ TEST_CASE("A space whose every body sleeps stands still: its steps advance the c
 
 TEST_CASE("A kinematic body moving into a sleeping island wakes it", "[FR:Simulation-Space]") {
   gp::Space space(sleepy());
-  space.add_body(ground());
-  const auto box = space.add_body(resting_box("box", 0.0));
-  run(space, 1.0);
-  REQUIRE(asleep(space, box));
+  const auto box = box_asleep(space);
   gp::BodyDef paddle;
   paddle.name = "paddle";
   paddle.type = gp::BodyType::Kinematic;
