@@ -7,6 +7,15 @@
 
 namespace gp {
 
+namespace {
+
+// Whether kinematic body `k` moves, and so may reach a sleeping island.
+bool kinematic_moves(const StepContext& c, BodyId k) {
+  return c.state.velocity[k] != Vec2::Zero() || c.state.angular_velocity[k] != 0.0;
+}
+
+}  // namespace
+
 void note_placed_asleep(StepContext& c) {
   if (c.placed_asleep.empty()) return;
   for (BodyId j : c.forces.bodies()) c.placed_asleep[j] = asleep(c, j) ? 1 : 0;
@@ -14,8 +23,9 @@ void note_placed_asleep(StepContext& c) {
 
 bool stands_still(const StepContext& c) {
   if (c.sleep_island.empty() || !c.contacts.empty() || !c.warm_starts.empty()) return false;
-  for (BodyId k : c.kinematic) {
-    if (c.state.velocity[k] != Vec2::Zero() || c.state.angular_velocity[k] != 0.0) return false;
+  if (std::any_of(c.kinematic.begin(), c.kinematic.end(),
+                  [&c](BodyId k) { return kinematic_moves(c, k); })) {
+    return false;
   }
   const std::vector<BodyId>& bodies = c.forces.bodies();
   return std::all_of(bodies.begin(), bodies.end(), [&c](BodyId j) { return asleep(c, j); });
@@ -50,7 +60,7 @@ bool wake_touched(StepContext& c) {
   }
   // Kinematic bodies are not dynamic, so the broadphase does not pair them with sleeping ones.
   for (BodyId k : c.kinematic) {
-    if (c.state.velocity[k] == Vec2::Zero() && c.state.angular_velocity[k] == 0.0) continue;
+    if (!kinematic_moves(c, k)) continue;
     for (auto [i, last] = c.shapes.of_body(k); i < last; ++i) {
       const Aabb swept = c.world_start.bounds(i)
                              .united(c.end_bounds.bounds(i))
