@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "box_pyramid.hpp"
 #include "gamephysics/gamephysics.hpp"
 #include "heap_counter.hpp"
 
@@ -55,29 +56,15 @@ TEST_CASE("A settled heap of discs holds at most 1 KiB of heap per disc", "[FR:S
   CHECK(per_body <= 1024.0);
 }
 
-// Heap held by a space of a pyramid of `rows` rows of unit boxes, with sleep on or off, after two
-// seconds: settled, and with sleep on asleep [bytes].
+// Heap held by a space of a pyramid of `rows` rows of unit boxes 5 cm apart, with sleep on or
+// off, after two seconds: settled, and with sleep on asleep [bytes].
 std::size_t pyramid_heap(int rows, bool sleep) {
   const std::size_t before = gp::test::heap_in_use();
   gp::Settings settings;
   settings.gravity = {0.0, -9.81};
   settings.sleep = sleep;
   gp::Space space(settings);
-  gp::BodyDef ground;
-  ground.name = "ground";
-  ground.type = gp::BodyType::Static;
-  ground.position = {0.0, -0.5};
-  ground.shapes.push_back({gp::Shape::box(60.0, 1.0), 0.0, 0.6, 1.0});
-  space.add_body(ground);
-  for (int row = 0; row < rows; ++row) {
-    for (int k = 0; k < rows - row; ++k) {
-      gp::BodyDef def;
-      def.name = std::to_string(row * rows + k).insert(0, 1, 'b');
-      def.position = {1.05 * (k - 0.5 * (rows - row - 1)), 0.5 + row};
-      def.shapes.push_back({gp::Shape::box(1.0, 1.0), 0.0, 0.6, 1.0});
-      space.add_body(def);
-    }
-  }
+  gp::test::add_box_pyramid(space, rows, 1.05);
   for (int k = 0; k < 120; ++k) space.step(1.0 / 60);
   return gp::test::heap_in_use() - before;
 }

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "box_pyramid.hpp"
 #include "gamephysics/gamephysics.hpp"
 #include "gamephysics/models/dd/kinetic_energy.hpp"
 
@@ -172,24 +173,9 @@ TEST_CASE("A 20-row pyramid of boxes stays put for 10 s",
   gp::Settings settings;
   settings.gravity = {0.0, -9.81};
   gp::Space space(settings);
-  gp::BodyDef ground;
-  ground.name = "ground";
-  ground.type = gp::BodyType::Static;
-  ground.position = {0.0, -0.5};
-  ground.shapes.push_back({gp::Shape::box(80, 1), 0.0, 0.6});
-  space.add_body(ground);
-  std::vector<gp::BodyId> boxes;
+  const std::vector<gp::BodyId> boxes = gp::test::add_box_pyramid(space, 20, 1.0);
   std::vector<Vec2> start;
-  for (int row = 0; row < 20; ++row) {
-    for (int col = 0; col < 20 - row; ++col) {
-      gp::BodyDef box;
-      box.name = "box" + std::to_string(boxes.size());
-      box.position = {-0.5 * (19 - row) + col, 0.5 + row};
-      box.shapes.push_back({gp::Shape::box(1, 1), 0.0, 0.6});
-      boxes.push_back(space.add_body(box));
-      start.push_back(space.state(boxes.back()).position);
-    }
-  }
+  for (gp::BodyId b : boxes) start.push_back(space.state(b).position);
   for (int k = 0; k < 600; ++k) space.step(1.0 / 60);
   double worst = 0.0;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
