@@ -9,24 +9,16 @@ namespace gp {
 namespace {
 
 // Room for at least `count` entries, twice the room held when it must grow: a step that finds a
-// pile's contacts from none would otherwise copy them at every eighth more (many_pyramids' first
-// step: 90 ms of 0.49 s).
+// pile's contacts from none would otherwise grow it at every eighth more.
 template <typename T>
-void room_for(std::vector<T>& entries, std::size_t count) {
-  if (entries.size() >= count) return;
-  entries.reserve(std::max(count, 2 * entries.size()));
-  entries.resize(entries.capacity());
+void room_for(TrivialRoom<T>& entries, std::size_t count) {
+  if (entries.size() < count) entries.resize(std::max(count, 2 * entries.size()));
 }
 
 // The room of `entries` cut to grown_room of the `used` first ones, if it holds more than that.
 template <typename T>
-void fit(std::vector<T>& entries, std::size_t used) {
-  if (entries.size() <= grown_room(used)) return;
-  std::vector<T> fitted;
-  fitted.reserve(grown_room(used));
-  fitted.assign(entries.begin(), entries.begin() + static_cast<std::ptrdiff_t>(used));
-  fitted.resize(fitted.capacity());
-  entries.swap(fitted);
+void fit(TrivialRoom<T>& entries, std::size_t used) {
+  if (entries.size() > grown_room(used)) entries.resize(grown_room(used));
 }
 
 }  // namespace
@@ -65,10 +57,10 @@ void ContactSet::fit_room() {
 void ContactSet::release() {
   clear();
   grown_ = false;
-  // Moved-from temporaries take the room with them.
-  contacts_ = std::vector<Contact>();
-  points_ = std::vector<ContactPointState>();
-  blocks_ = std::vector<NormalBlock>();
+  contacts_.resize(0);
+  points_.resize(0);
+  blocks_.resize(0);
+  // A moved-from temporary takes the room with it.
   bounces_ = std::vector<double>();
 }
 

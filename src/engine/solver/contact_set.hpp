@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/solver/contact.hpp"
+#include "engine/trivial_room.hpp"
 
 namespace gp {
 
@@ -36,10 +37,10 @@ class ContactSet {
 
   Contact& operator[](std::size_t i) { return contacts_[i]; }
   const Contact& operator[](std::size_t i) const { return contacts_[i]; }
-  auto begin() { return contacts_.begin(); }
-  auto end() { return contacts_.begin() + static_cast<std::ptrdiff_t>(size_); }
-  auto begin() const { return contacts_.begin(); }
-  auto end() const { return contacts_.begin() + static_cast<std::ptrdiff_t>(size_); }
+  Contact* begin() { return contacts_.data(); }
+  Contact* end() { return contacts_.data() + size_; }
+  const Contact* begin() const { return contacts_.data(); }
+  const Contact* end() const { return contacts_.data() + size_; }
 
   std::span<ContactPointState> points(const Contact& c) {
     return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
@@ -125,9 +126,9 @@ class ContactSet {
   void grow();
 
   // Each array's first size_, point_count_ and block_count_ entries are in use; the rest is room.
-  std::vector<Contact> contacts_;
-  std::vector<ContactPointState> points_;
-  std::vector<NormalBlock> blocks_;
+  TrivialRoom<Contact> contacts_;
+  TrivialRoom<ContactPointState> points_;
+  TrivialRoom<NormalBlock> blocks_;
   std::vector<double> bounces_;  // per point, while keeps_bounces_
   std::size_t size_ = 0;
   std::size_t point_count_ = 0;
