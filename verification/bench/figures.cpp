@@ -7,13 +7,13 @@
 
 namespace gp::bench {
 
-namespace {
-
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2.0;
 }
+
+namespace {
 
 double sample_stddev(const std::vector<double>& v) {
   if (v.size() < 2) return 0.0;

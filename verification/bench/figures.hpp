@@ -25,6 +25,9 @@ struct Figures {
   std::size_t bodies = 0;    ///< of the workload's scene
 };
 
+/// The median of `v` (not empty): the middle value, or the mean of the two middle ones.
+double median(std::vector<double> v);
+
 /// Median, min, max and sample standard deviation of repetitions' wall times [ms].
 struct TimeSpread {
   double median, min, max, stddev;

@@ -5,11 +5,13 @@
 //
 // By default each benchmark is repeated 5 times and the repetitions of all benchmarks run in
 // random interleaved order, so that slow phases of the machine hit every engine alike; --quick
-// runs each once and leaves out rain16000. Flags given on the command line override these.
+// runs each once and leaves out rain16000. Flags given on the command line override these. Before
+// and after the benchmarks, what the machine's second core gives then (core_capacity.hpp).
 
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -17,6 +19,7 @@
 
 #include "verification/bench/bench_engine.hpp"
 #include "verification/bench/benchmarks.hpp"
+#include "verification/bench/core_capacity.hpp"
 #include "verification/bench/run_collector.hpp"
 #include "verification/bench/summary.hpp"
 #include "verification/bench/workloads.hpp"
@@ -51,9 +54,22 @@ int main(int argc, char** argv) {
   for (const std::string& engine : engines) std::cout << "  " << engine << "\n";
   std::cout.flush();
 
+  // The second core's worth before and after, beside which to read the two-thread rows.
+  const gp::bench::Workload& reference = *std::find_if(
+      workloads.begin(), workloads.end(), [](const auto& w) { return w.name == "pyramid20"; });
+  constexpr int kCapacityRounds = 5;
+  const auto capacity = [&](const char* moment) {
+    return gp::bench::describe(moment, reference,
+                               gp::bench::measure_core_capacity(reference, kCapacityRounds));
+  };
+  const std::string at_start = capacity("at the start of the run");
+  std::cout << at_start << "\n";
+  std::cout.flush();
+
   gp::bench::RunCollector collector(::isatty(STDOUT_FILENO) != 0);
   benchmark::RunSpecifiedBenchmarks(&collector);
   gp::bench::print_summary(std::cout, gp::bench::figures(workloads, collector.runs()));
+  std::cout << at_start << "\n" << capacity("at the end of the run") << "\n";
   benchmark::Shutdown();
   return 0;
 }
