@@ -10,7 +10,7 @@
 namespace {
 namespace test_core_capacity {
 
-TEST_CASE("Two copies at one's speed are two cores; one after the other is one",
+TEST_CASE("Two copies at one's speed are two cores, and one after the other is one",
           "[NFR:Performance]") {
   // Both copies as fast as one alone: 2 runs' work in 1 run's time.
   CHECK(gp::bench::cores_at_once({0.5, 0.5, 0.5}) == Approx(2.0));
