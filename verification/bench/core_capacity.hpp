@@ -4,8 +4,8 @@
 // not both keep the speed of one alone, and no engine's two threads can be twice as fast as one.
 // The bench measures it at its start and end, so that its thread speed-ups can be read against it.
 
+#include <cstddef>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "verification/bench/workloads.hpp"
@@ -21,7 +21,8 @@ struct CapacityRound {
 /// The cores' worth of work done while both copies ran: each copy does the work of one run alone
 /// (`alone` s at one core's speed); when the faster ends, the slower's rest is done at one core's
 /// speed too, so the work done together, in runs, is 2 − (slower − faster) / alone, over the
-/// faster's time in runs, faster / alone. 2: both cores kept their speed; 1: none was gained.
+/// faster's time in runs, faster / alone. 2: both cores kept their speed; 1: none was gained;
+/// above 2 where the machine was slower for the run alone than for the two.
 double cores_at_once(const CapacityRound& round);
 
 /// The median of cores_at_once over `rounds` (not empty), with the least and the most.
