@@ -83,19 +83,21 @@ void fill_contact(const ShapePair& pair, const BodyShapes& shapes, const Contact
   }
 }
 
-// Starts each of `points`, of the contact of the pair whose key is `pair`, from the impulses of
-// the warm start with its features, scaled by `scale`. The warm starts are sorted by pair, and
-// the pairs visited in that order: `next` moves forward to the first warm start of pairs not
-// before `pair`, where the next pair's search starts.
+// Starts each of `points`, those of manifold `m` of the pair whose key is `pair`, from the
+// impulses of the warm start with its features, scaled by `scale`. The features are the
+// manifold's at hand: a point's id read back from the contact just written waits on the stores
+// that wrote it. The warm starts are sorted by pair, and the pairs visited in that order: `next`
+// moves forward to the first warm start of pairs not before `pair`, where the next pair's search
+// starts.
 void warm_start_points(std::vector<WarmStart>::const_iterator& next,
                        std::vector<WarmStart>::const_iterator end, std::uint64_t pair, double scale,
-                       std::span<ContactPointState> points) {
+                       const ContactManifold& m, std::span<ContactPointState> points) {
   while (next != end && next->pair() < pair) ++next;
   for (auto same = next; same != end && same->pair() == pair; ++same) {
-    for (ContactPointState& q : points) {
-      if (same->features() == q.id.key()) {
-        q.normal_impulse = scale * same->normal;
-        q.tangent_impulse = scale * same->tangent;
+    for (int k = 0; k < m.count; ++k) {
+      if (same->features() == m.points[k].id.key()) {
+        points[k].normal_impulse = scale * same->normal;
+        points[k].tangent_impulse = scale * same->tangent;
       }
     }
   }
@@ -152,7 +154,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
                           : collide(a, b, margin_);
       if (m.count == 0) continue;
       Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
-      warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale,
+      warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, m,
                         contacts.points(c));
       touching[i] = touches(contacts.points(c), slop);
     }
@@ -187,7 +189,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
         const ShapePair& p = pairs[first + i];
         Contact& c = contacts.place(slots_[i]);
         fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
-        warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale,
+        warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, manifolds_[i],
                           contacts.points(c));
         touching[first + i] = touches(contacts.points(c), slop);
       }
