@@ -81,6 +81,10 @@ TEST_CASE("Prepared and warm-started in one pass, a resting box gets its masses 
     points[k].normal_mass = points[k].tangent_mass = 0.0;
     points[k].normal_impulse = 0.5 * kGravity * kStep;
   }
+  // A block is left by the narrowphase as the last contact in its room had it: all of it is
+  // written anew.
+  const double nan = std::nan("");
+  box.contacts.block(box.contacts[0]) = {nan, nan, nan, nan, nan, nan};
   gp::ContactBatches batches;
   batches.build(box.contacts, {}, box.inertia, box.state.position, {});
   gp::MotionState before = box.state;
@@ -93,6 +97,14 @@ TEST_CASE("Prepared and warm-started in one pass, a resting box gets its masses 
     CHECK(points[k].normal_mass == Approx(0.4).epsilon(1e-14));
     CHECK(points[k].tangent_mass == Approx(0.4).epsilon(1e-14));
   }
+  // K: 1/m + (r₁ × n)(r₂ × n)/I = 1 − 0.25 · 6 = −0.5 kg⁻¹ off the diagonal, 2.5 on it; det 6.
+  const gp::NormalBlock& k = box.contacts.block(box.contacts[0]);
+  CHECK(k.k11 == Approx(2.5).epsilon(1e-14));
+  CHECK(k.k22 == Approx(2.5).epsilon(1e-14));
+  CHECK(k.k12 == Approx(-0.5).epsilon(1e-14));
+  CHECK(k.inverse11 == Approx(2.5 / 6.0).epsilon(1e-14));
+  CHECK(k.inverse12 == Approx(0.5 / 6.0).epsilon(1e-14));
+  CHECK(k.inverse22 == Approx(2.5 / 6.0).epsilon(1e-14));
   // The two half weights carried over cancel the step's gravity, g h, of the 1 kg box.
   CHECK(std::abs(box.state.velocity[1].y()) < 1e-15);
   CHECK(std::abs(box.state.angular_velocity[1]) < 1e-15);

@@ -11,9 +11,6 @@
 #include "engine/collision/narrowphase.hpp"
 #include "engine/threads.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 namespace gp {
 
 std::span<const ShapePair> CollisionDetection::drop_pairs(std::span<const ShapePair> dropped) {
@@ -156,7 +153,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
       Contact& c = append_contact(p, shapes, m, ctx.start, contacts);
       warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, m,
                         contacts.points(c));
-      touching[i] = touches(contacts.points(c), slop);
+      touching[i] = touches(m, slop);
     }
     contacts.fit_room();
     return;
@@ -167,9 +164,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   for (std::size_t first = 0; first < pairs.size(); first += kCollidedPairsPerBlock) {
     const std::size_t size = std::min(kCollidedPairsPerBlock, pairs.size() - first);
     const auto each_range = [size](const auto& work) {
-      tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, size, kCollidedPairsPerTask),
-          [&](const tbb::blocked_range<std::size_t>& r) { work(r.begin(), r.end()); });
+      for_blocks(size, kCollidedPairsPerTask, false, work);
     };
     each_range([&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
@@ -187,11 +182,11 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
       for (std::size_t i = begin; i < end; ++i) {
         if (slots_[i].contact == ContactSlot::kNone) continue;
         const ShapePair& p = pairs[first + i];
-        Contact& c = contacts.place(slots_[i]);
-        fill_contact(p, shapes, manifolds_[i], ctx.start, c, contacts.points(c));
+        const std::span<ContactPointState> points = contacts.points(slots_[i]);
+        fill_contact(p, shapes, manifolds_[i], ctx.start, contacts.place(slots_[i]), points);
         warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, manifolds_[i],
-                          contacts.points(c));
-        touching[first + i] = touches(contacts.points(c), slop);
+                          points);
+        touching[first + i] = touches(manifolds_[i], slop);
       }
     });
   }

@@ -63,11 +63,13 @@ struct ContactPointState {
   AnchorKind anchor_b = AnchorKind::kFixed;
 };
 
-/// Whether one of `points` overlaps or is apart by at most `slop` [m]: its contact holds the
-/// shapes together, where one whose points are all farther apart closes a gap.
-inline bool touches(std::span<const ContactPointState> points, double slop) {
-  for (const ContactPointState& p : points) {
-    if (p.depth > -slop) return true;
+/// Whether one of the points of `m` overlaps or is apart by at most `slop` [m], at the precision
+/// a contact point keeps its depth (ContactPointState::depth): its contact holds the shapes
+/// together, where one whose points are all farther apart closes a gap. Read from the manifold
+/// rather than from the contact just written, whose stores a read back would wait on.
+inline bool touches(const ContactManifold& m, double slop) {
+  for (int k = 0; k < m.count; ++k) {
+    if (static_cast<float>(m.points[k].depth) > -slop) return true;
   }
   return false;
 }

@@ -98,13 +98,10 @@ Contact& ContactSet::place(const ContactSlot& slot) {
   // A point at a time, each of a size known when compiled, so that it is cleared by stores in
   // place: cleared as a run of points of either size, by a call to memset, the narrowphase of a
   // box pile took a sixth longer.
-  ContactPointState* const first = points_.data() + c.first_point;
+  ContactPointState* const first = points_.data() + slot.first_point;
   first[0] = ContactPointState{};
-  if (c.count() == 2) {
-    first[1] = ContactPointState{};
-    blocks_[c.block] = NormalBlock{};
-  }
-  if (keeps_bounces_) std::ranges::fill(bounce_velocities(c), 0.0);
+  if (slot.count() == 2) first[1] = ContactPointState{};
+  if (keeps_bounces_) std::ranges::fill(bounce_velocities(slot), 0.0);
   return c;
 }
 

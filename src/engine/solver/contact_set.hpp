@@ -20,6 +20,9 @@ struct ContactSlot {
   std::uint32_t contact = kNone;
   std::uint32_t first_point = 0;
   std::uint32_t block = Contact::kNoBlock;
+
+  /// Of points: 1 or 2 (Contact::count).
+  std::size_t count() const { return block == Contact::kNoBlock ? 1 : 2; }
 };
 
 /// Contacts in the order they were appended (the solvers' order), each with its `count` points
@@ -48,16 +51,23 @@ class ContactSet {
   std::span<const ContactPointState> points(const Contact& c) const {
     return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
   }
+  /// The points of the contact placed at `slot` (of reserve), found from the slot alone: read
+  /// from the contact just placed, they would wait on the stores that wrote it.
+  std::span<ContactPointState> points(const ContactSlot& slot) {
+    return {points_.data() + slot.first_point, slot.count()};
+  }
 
-  /// Appends a contact of `count` points (1 or 2), its points and block value-initialised; the
-  /// caller fills in the rest.
+  /// Appends a contact of `count` points (1 or 2), its points value-initialised; the caller fills
+  /// in the rest. A block is left as it was: the preparation (prepare_contacts) writes it whole,
+  /// and cleared here it would be one more cache line the narrowphase writes, often one the other
+  /// thread holds.
   Contact& append(int count);
 
   /// Makes room for a contact per entry of `counts` that is 1 or 2 (its number of points), in
   /// order after the others, and writes to `slots` where each goes; place then initialises it.
   void reserve(std::span<const std::uint8_t> counts, std::span<ContactSlot> slots);
-  /// The contact at `slot` (of reserve), with its points and block value-initialised. Contacts
-  /// of different slots may be placed on different threads at once.
+  /// The contact at `slot` (of reserve), its points value-initialised and its block left as
+  /// append leaves it. Contacts of different slots may be placed on different threads at once.
   Contact& place(const ContactSlot& slot);
 
   /// Cuts the arrays to an eighth more than they hold if they grew since the last call: a step
@@ -82,6 +92,9 @@ class ContactSet {
   }
   std::span<const double> bounce_velocities(const Contact& c) const {
     return {bounces_.data() + c.first_point, static_cast<std::size_t>(c.count())};
+  }
+  std::span<double> bounce_velocities(const ContactSlot& slot) {
+    return {bounces_.data() + slot.first_point, slot.count()};
   }
   /// Gives every point a bounce velocity, each to be set by the caller, or, with `keep` false,
   /// none.
