@@ -16,25 +16,32 @@ namespace test_contact_set {
 TEST_CASE("reserve hands out the slots that appending one by one gives", "[contact_set]") {
   gp::ContactSet set;
   set.append(1);
-  // Pairs making 2, none, 1 and 2 points after a one-point contact: contacts 1, 2, 3 with
-  // points from 1, 3 and 4, blocks 0 and 1.
-  const std::array<std::uint8_t, 4> counts{2, 0, 1, 2};
-  std::array<gp::ContactSlot, 4> slots{};
-  set.reserve(counts, slots);
+  // After a one-point contact, a run of contacts of 2 and 1 points, an empty run, and a run of
+  // one of 2 points: contacts 1, 2, 3 with points from 1, 3 and 4, blocks 0 and 1.
+  std::array<gp::ContactCursor, 3> runs{};
+  runs[0].take(2);
+  runs[0].take(1);
+  runs[2].take(2);
+  CHECK(runs[0].contact == 2);
+  CHECK(runs[0].point == 3);
+  CHECK(runs[0].block == 1);
+  set.reserve(runs);
+  CHECK(set.size() == 4);
+  CHECK(set.point_count() == 6);
+  std::array<gp::ContactSlot, 3> slots{runs[0].take(2), runs[0].take(1), runs[2].take(2)};
   CHECK(slots[0].contact == 1);
   CHECK(slots[0].first_point == 1);
   CHECK(slots[0].block == 0);
-  CHECK(slots[1].contact == gp::ContactSlot::kNone);
-  CHECK(slots[2].contact == 2);
-  CHECK(slots[2].first_point == 3);
-  CHECK(slots[2].block == gp::Contact::kNoBlock);
-  CHECK(slots[3].contact == 3);
-  CHECK(slots[3].first_point == 4);
-  CHECK(slots[3].block == 1);
-  CHECK(set.size() == 4);
-  CHECK(set.point_count() == 6);
+  CHECK(slots[1].contact == 2);
+  CHECK(slots[1].first_point == 3);
+  CHECK(slots[1].block == gp::Contact::kNoBlock);
+  // The empty run starts where the next one does.
+  CHECK(runs[1].contact == 3);
+  CHECK(slots[2].contact == 3);
+  CHECK(slots[2].first_point == 4);
+  CHECK(slots[2].block == 1);
   // Placed out of order, as threads may: each contact knows its points.
-  for (int i : {3, 0, 2}) set.place(slots[static_cast<std::size_t>(i)]);
+  for (int i : {2, 0, 1}) set.place(slots[static_cast<std::size_t>(i)]);
   CHECK(set[1].count() == 2);
   CHECK(set[2].count() == 1);
   CHECK(set.points(set[3]).data() == set.points(set[1]).data() + 3);

@@ -23,13 +23,14 @@ std::span<const ShapePair> CollisionDetection::drop_pairs(std::span<const ShapeP
 
 namespace {
 
-// Pairs a thread takes at a time: a manifold costs about a hundred nanoseconds, a task about a
-// microsecond to hand out.
-constexpr std::size_t kCollidedPairsPerTask = 256;
-// Pairs whose manifolds are found side by side before they are appended, 109 B each (manifold,
-// slot, count): 1.8 MB. The threads wait for each other twice a block: blocks of 4096 pairs made
-// many_pyramids' narrowphase on two threads a sixth slower.
-constexpr std::size_t kCollidedPairsPerBlock = 64 * kCollidedPairsPerTask;
+// Pairs a thread takes at a time, a run whose contacts are placed one after the other: a
+// manifold costs about a hundred nanoseconds, a task about a microsecond to hand out.
+constexpr std::size_t kCollidedPairsPerRun = 256;
+constexpr std::size_t kRunsPerBlock = 64;
+// Pairs whose manifolds are found side by side before their contacts are placed, 88 B each: 1.4
+// MB. The threads wait for each other twice a block: blocks of 4096 pairs made many_pyramids'
+// narrowphase on two threads a sixth slower.
+constexpr std::size_t kCollidedPairsPerBlock = kRunsPerBlock * kCollidedPairsPerRun;
 // Fewer pairs are collided on one thread even where there are more: a second one gains them
 // little, and the contacts it writes are then read on the first by the stages after.
 constexpr std::size_t kParallelPairs = 1024;
@@ -114,8 +115,7 @@ Contact& append_contact(const ShapePair& pair, const BodyShapes& shapes, const C
 void CollisionDetection::release() {
   candidates_.release();
   manifolds_ = std::vector<ContactManifold>();
-  counts_ = std::vector<std::uint8_t>();
-  slots_ = std::vector<ContactSlot>();
+  runs_ = std::vector<ContactCursor>();
 }
 
 void CollisionDetection::find_contacts(StepContext& ctx) {
@@ -131,12 +131,11 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
   reserve_for(touching, pairs.size());
   touching.assign(pairs.size(), 0);
   const bool threads = !one_thread();
-  // On several threads the slots are held whatever the pairs, so that heap per body does not jump
-  // where a scene's pairs cross kParallelPairs.
+  // On several threads the manifolds' room is held whatever the pairs, so that heap per body does
+  // not jump where a scene's pairs cross kParallelPairs.
   if (threads) {
     manifolds_.resize(kCollidedPairsPerBlock);
-    counts_.resize(kCollidedPairsPerBlock);
-    slots_.resize(kCollidedPairsPerBlock);
+    runs_.resize(kRunsPerBlock);
   }
   if (!threads || pairs.size() < kParallelPairs) {
     auto old = previous.begin();
@@ -158,35 +157,49 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     contacts.fit_room();
     return;
   }
-  // On several threads, a block of pairs at a time (so that the slots take a fixed room rather
-  // than room per pair): each pair's manifold into its own slot, the contacts appended in the
-  // pairs' order, so that they do not depend on the number of threads, and then filled in.
+  // On several threads, a block of pairs at a time (so that the manifolds take a fixed room
+  // rather than room per pair), in runs: each pair's manifold into its own slot, each run
+  // counting the room its contacts take; room made for the runs in the pairs' order, so that
+  // the contacts do not depend on the number of threads; then each run's contacts placed one
+  // after the other from the run's start, and filled in.
   for (std::size_t first = 0; first < pairs.size(); first += kCollidedPairsPerBlock) {
     const std::size_t size = std::min(kCollidedPairsPerBlock, pairs.size() - first);
-    const auto each_range = [size](const auto& work) {
-      for_blocks(size, kCollidedPairsPerTask, false, work);
+    const std::size_t runs = (size + kCollidedPairsPerRun - 1) / kCollidedPairsPerRun;
+    // work(first pair, last pair, run) for each run of the block, its pairs counted in the block.
+    const auto each_run = [&](const auto& work) {
+      for_blocks(runs, 1, false, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t r = begin; r < end; ++r) {
+          work(r * kCollidedPairsPerRun, std::min(size, (r + 1) * kCollidedPairsPerRun), runs_[r]);
+        }
+      });
     };
-    each_range([&](std::size_t begin, std::size_t end) {
+    // Each run counted and then placed from a cursor of its own, written back once: runs side by
+    // side share cache lines, which two threads would hand to and fro at every contact.
+    each_run([&](std::size_t begin, std::size_t end, ContactCursor& run) {
+      ContactCursor room;
       for (std::size_t i = begin; i < end; ++i) {
         const ShapePair& p = pairs[first + i];
         manifolds_[i] = collide(world.packed(p.first), world.packed(p.second), margin_);
-        counts_[i] = static_cast<std::uint8_t>(manifolds_[i].count);
+        if (manifolds_[i].count > 0) room.take(manifolds_[i].count);
       }
+      run = room;
     });
-    contacts.reserve(std::span(counts_).first(size), std::span(slots_).first(size));
-    each_range([&](std::size_t begin, std::size_t end) {
-      // A search for the range's first pair, then one forward scan (warm_start_points).
+    contacts.reserve(std::span(runs_).first(runs));
+    each_run([&](std::size_t begin, std::size_t end, const ContactCursor& start) {
+      ContactCursor next = start;
+      // A search for the run's first pair, then one forward scan (warm_start_points).
       auto old = std::lower_bound(
           previous.begin(), previous.end(), WarmStart::pair_key(pairs[first + begin]),
           [](const WarmStart& w, std::uint64_t pair) { return w.pair() < pair; });
       for (std::size_t i = begin; i < end; ++i) {
-        if (slots_[i].contact == ContactSlot::kNone) continue;
+        const ContactManifold& m = manifolds_[i];
+        if (m.count == 0) continue;
         const ShapePair& p = pairs[first + i];
-        const std::span<ContactPointState> points = contacts.points(slots_[i]);
-        fill_contact(p, shapes, manifolds_[i], ctx.start, contacts.place(slots_[i]), points);
-        warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, manifolds_[i],
-                          points);
-        touching[first + i] = touches(manifolds_[i], slop);
+        const ContactSlot slot = next.take(m.count);
+        const std::span<ContactPointState> points = contacts.points(slot);
+        fill_contact(p, shapes, m, ctx.start, contacts.place(slot), points);
+        warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, m, points);
+        touching[first + i] = touches(m, slop);
       }
     });
   }

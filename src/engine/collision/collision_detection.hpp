@@ -51,8 +51,8 @@ class CollisionDetection {
   double margin_;
   CandidatePairs candidates_;
   std::vector<ContactManifold> manifolds_;  // per pair of a block of find_contacts
-  std::vector<std::uint8_t> counts_;        // per pair of the block: its number of points
-  std::vector<ContactSlot> slots_;          // per pair of the block: where its contact goes
+  // Per run of pairs of the block: the room its contacts take, then where they start.
+  std::vector<ContactCursor> runs_;
 };
 
 }  // namespace gp

@@ -24,24 +24,14 @@ void fit(TrivialRoom<T>& entries, std::size_t used) {
 }  // namespace
 
 void ContactSet::clear() {
-  size_ = 0;
-  point_count_ = 0;
-  block_count_ = 0;
+  end_ = {};
   keep_bounce_velocities(false);
 }
 
-ContactSlot ContactSet::take(std::uint8_t count) {
-  const ContactSlot slot{
-      static_cast<std::uint32_t>(size_++), static_cast<std::uint32_t>(point_count_),
-      count == 2 ? static_cast<std::uint32_t>(block_count_++) : Contact::kNoBlock};
-  point_count_ += count;
-  return slot;
-}
-
 void ContactSet::grow() {
-  room_for(contacts_, size_);
-  room_for(points_, point_count_);
-  room_for(blocks_, block_count_);
+  room_for(contacts_, end_.contact);
+  room_for(points_, end_.point);
+  room_for(blocks_, end_.block);
   if (keeps_bounces_) keep_bounce_velocities(true);
   grown_ = true;
 }
@@ -49,9 +39,9 @@ void ContactSet::grow() {
 void ContactSet::fit_room() {
   if (!grown_) return;
   grown_ = false;
-  fit(contacts_, size_);
-  fit(points_, point_count_);
-  fit(blocks_, block_count_);
+  fit(contacts_, end_.contact);
+  fit(points_, end_.point);
+  fit(blocks_, end_.block);
 }
 
 void ContactSet::release() {
@@ -70,19 +60,21 @@ void ContactSet::keep_bounce_velocities(bool keep) {
     bounces_.clear();
     return;
   }
-  reserve_for(bounces_, point_count_);
-  bounces_.resize(point_count_);
+  reserve_for(bounces_, end_.point);
+  bounces_.resize(end_.point);
 }
 
 Contact& ContactSet::append(int count) {
-  const ContactSlot slot = take(static_cast<std::uint8_t>(count));
+  const ContactSlot slot = end_.take(count);
   make_room();
   return place(slot);
 }
 
-void ContactSet::reserve(std::span<const std::uint8_t> counts, std::span<ContactSlot> slots) {
-  for (std::size_t i = 0; i < counts.size(); ++i) {
-    slots[i] = counts[i] == 0 ? ContactSlot{} : take(counts[i]);
+void ContactSet::reserve(std::span<ContactCursor> runs) {
+  for (ContactCursor& run : runs) {
+    const ContactCursor start = end_;
+    end_ = {end_.contact + run.contact, end_.point + run.point, end_.block + run.block};
+    run = start;
   }
   make_room();
 }

@@ -13,16 +13,32 @@
 
 namespace gp {
 
-/// Where ContactSet::reserve puts a contact: its index, the index of its first point, and of its
-/// block (Contact::kNoBlock for one point); `contact` is kNone when no contact goes there.
+/// Where a contact goes in a ContactSet: its index, the index of its first point, and of its
+/// block (Contact::kNoBlock for one point).
 struct ContactSlot {
-  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
-  std::uint32_t contact = kNone;
+  std::uint32_t contact = 0;
   std::uint32_t first_point = 0;
   std::uint32_t block = Contact::kNoBlock;
 
   /// Of points: 1 or 2 (Contact::count).
   std::size_t count() const { return block == Contact::kNoBlock ? 1 : 2; }
+};
+
+/// Where the next contact of a run of contacts goes: its index, its first point's, and the block
+/// it takes if it has two points. From zero, it counts what a run takes.
+struct ContactCursor {
+  std::uint32_t contact = 0;
+  std::uint32_t point = 0;
+  std::uint32_t block = 0;
+
+  /// The slot of the next contact, of `count` points (1 or 2), and the cursor moved past it.
+  ContactSlot take(int count) {
+    const ContactSlot slot{contact, point, count == 2 ? block : Contact::kNoBlock};
+    contact += 1;
+    point += static_cast<std::uint32_t>(count);
+    block += count == 2 ? 1U : 0U;
+    return slot;
+  }
 };
 
 /// Contacts in the order they were appended (the solvers' order), each with its `count` points
@@ -32,18 +48,18 @@ struct ContactSlot {
 /// fit_room cuts them back once a step's contacts are all in.
 class ContactSet {
  public:
-  std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return end_.contact; }
+  bool empty() const { return end_.contact == 0; }
   /// Of all the contacts together.
-  std::size_t point_count() const { return point_count_; }
+  std::size_t point_count() const { return end_.point; }
   void clear();
 
   Contact& operator[](std::size_t i) { return contacts_[i]; }
   const Contact& operator[](std::size_t i) const { return contacts_[i]; }
   Contact* begin() { return contacts_.data(); }
-  Contact* end() { return contacts_.data() + size_; }
+  Contact* end() { return contacts_.data() + end_.contact; }
   const Contact* begin() const { return contacts_.data(); }
-  const Contact* end() const { return contacts_.data() + size_; }
+  const Contact* end() const { return contacts_.data() + end_.contact; }
 
   std::span<ContactPointState> points(const Contact& c) {
     return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
@@ -63,9 +79,10 @@ class ContactSet {
   /// thread holds.
   Contact& append(int count);
 
-  /// Makes room for a contact per entry of `counts` that is 1 or 2 (its number of points), in
-  /// order after the others, and writes to `slots` where each goes; place then initialises it.
-  void reserve(std::span<const std::uint8_t> counts, std::span<ContactSlot> slots);
+  /// Makes room for `runs` of contacts in order after the others, each given as the cursor that
+  /// counted it from zero, and turns each into the cursor of its run's first contact, from which
+  /// its contacts' slots are taken in turn; place then initialises each.
+  void reserve(std::span<ContactCursor> runs);
   /// The contact at `slot` (of reserve), its points value-initialised and its block left as
   /// append leaves it. Contacts of different slots may be placed on different threads at once.
   Contact& place(const ContactSlot& slot);
@@ -121,32 +138,28 @@ class ContactSet {
       }
       contacts_[kept++] = moved;
     }
-    size_ = kept;
-    point_count_ = kept_points;
-    block_count_ = kept_blocks;
+    end_ = {static_cast<std::uint32_t>(kept), static_cast<std::uint32_t>(kept_points),
+            static_cast<std::uint32_t>(kept_blocks)};
   }
 
  private:
-  ContactSlot take(std::uint8_t count);
   /// Room for the contacts, points and blocks taken. Inline, with its growth out of line: it is
   /// asked for at every contact appended, and the arrays seldom grow.
   void make_room() {
-    if (contacts_.size() < size_ || points_.size() < point_count_ ||
-        blocks_.size() < block_count_ || (keeps_bounces_ && bounces_.size() < point_count_)) {
+    if (contacts_.size() < end_.contact || points_.size() < end_.point ||
+        blocks_.size() < end_.block || (keeps_bounces_ && bounces_.size() < end_.point)) {
       grow();
     }
   }
   void grow();
 
-  // Each array's first size_, point_count_ and block_count_ entries are in use; the rest is room.
+  // Each array's first entries, up to end_, are in use; the rest is room.
   TrivialRoom<Contact> contacts_;
   TrivialRoom<ContactPointState> points_;
   TrivialRoom<NormalBlock> blocks_;
   std::vector<double> bounces_;  // per point, while keeps_bounces_
-  std::size_t size_ = 0;
-  std::size_t point_count_ = 0;
-  std::size_t block_count_ = 0;
-  bool grown_ = false;  // since the last fit_room
+  ContactCursor end_;            // past the contacts, points and blocks in use
+  bool grown_ = false;           // since the last fit_room
   bool keeps_bounces_ = false;
 };
 
