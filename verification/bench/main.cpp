@@ -6,7 +6,8 @@
 // By default each benchmark is repeated 5 times and the repetitions of all benchmarks run in
 // random interleaved order, so that slow phases of the machine hit every engine alike; --quick
 // runs each once and leaves out rain16000. Flags given on the command line override these. Before
-// and after the benchmarks, what the machine's second core gives then (core_capacity.hpp).
+// and after the benchmarks, what the machine's second core gives then (core_capacity.hpp) and how
+// long a cache line takes to go from one core to the other and back (core_hand_over.hpp).
 
 #include <benchmark/benchmark.h>
 #include <unistd.h>
@@ -20,6 +21,7 @@
 #include "verification/bench/bench_engine.hpp"
 #include "verification/bench/benchmarks.hpp"
 #include "verification/bench/core_capacity.hpp"
+#include "verification/bench/core_hand_over.hpp"
 #include "verification/bench/run_collector.hpp"
 #include "verification/bench/summary.hpp"
 #include "verification/bench/workloads.hpp"
@@ -58,18 +60,26 @@ int main(int argc, char** argv) {
   const gp::bench::Workload& reference = *std::find_if(
       workloads.begin(), workloads.end(), [](const auto& w) { return w.name == "pyramid20"; });
   constexpr int kCapacityRounds = 5;
+  constexpr int kHandOverTrips = 100000;  // 50 ms a round at the 500 ns seen on these machines
   const auto capacity = [&](const char* moment) {
     return gp::bench::describe(moment, reference,
                                gp::bench::measure_core_capacity(reference, kCapacityRounds));
   };
-  const std::string at_start = capacity("at the start of the run");
+  const auto hand_over = [](const char* moment) {
+    return gp::bench::describe(moment,
+                               gp::bench::measure_hand_over(kCapacityRounds, kHandOverTrips));
+  };
+  const std::string at_start =
+      capacity("at the start of the run") + "\n" + hand_over("at the start of the run");
   std::cout << at_start << "\n";
   std::cout.flush();
 
   gp::bench::RunCollector collector(::isatty(STDOUT_FILENO) != 0);
   benchmark::RunSpecifiedBenchmarks(&collector);
   gp::bench::print_summary(std::cout, gp::bench::figures(workloads, collector.runs()));
-  std::cout << at_start << "\n" << capacity("at the end of the run") << "\n";
+  std::cout << at_start << "\n"
+            << capacity("at the end of the run") << "\n"
+            << hand_over("at the end of the run") << "\n";
   benchmark::Shutdown();
   return 0;
 }
