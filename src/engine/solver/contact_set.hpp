@@ -67,8 +67,8 @@ class ContactSet {
   std::span<const ContactPointState> points(const Contact& c) const {
     return {points_.data() + c.first_point, static_cast<std::size_t>(c.count())};
   }
-  /// The points of the contact placed at `slot` (of reserve), found from the slot alone: read
-  /// from the contact just placed, they would wait on the stores that wrote it.
+  /// The points of the contact placed at `slot`, found from the slot alone: read from the
+  /// contact just placed, they would wait on the stores that wrote it.
   std::span<ContactPointState> points(const ContactSlot& slot) {
     return {points_.data() + slot.first_point, slot.count()};
   }
@@ -83,8 +83,9 @@ class ContactSet {
   /// counted it from zero, and turns each into the cursor of its run's first contact, from which
   /// its contacts' slots are taken in turn; place then initialises each.
   void reserve(std::span<ContactCursor> runs);
-  /// The contact at `slot` (of reserve), its points value-initialised and its block left as
-  /// append leaves it. Contacts of different slots may be placed on different threads at once.
+  /// The contact at `slot` (taken from a run's cursor after reserve), its points
+  /// value-initialised and its block left as append leaves it. Contacts of different slots may be
+  /// placed on different threads at once.
   Contact& place(const ContactSlot& slot);
 
   /// Cuts the arrays to an eighth more than they hold if they grew since the last call: a step
