@@ -111,9 +111,6 @@ class ContactSet {
   std::span<const double> bounce_velocities(const Contact& c) const {
     return {bounces_.data() + c.first_point, static_cast<std::size_t>(c.count())};
   }
-  std::span<double> bounce_velocities(const ContactSlot& slot) {
-    return {bounces_.data() + slot.first_point, slot.count()};
-  }
   /// Gives every point a bounce velocity, each to be set by the caller, or, with `keep` false,
   /// none.
   void keep_bounce_velocities(bool keep);
@@ -144,6 +141,10 @@ class ContactSet {
   }
 
  private:
+  /// The bounce velocities of the contact placed at `slot`, found from the slot alone (place).
+  std::span<double> bounce_velocities(const ContactSlot& slot) {
+    return {bounces_.data() + slot.first_point, slot.count()};
+  }
   /// Room for the contacts, points and blocks taken. Inline, with its growth out of line: it is
   /// asked for at every contact appended, and the arrays seldom grow.
   void make_room() {
