@@ -58,11 +58,11 @@ HandOver measure_hand_over(int rounds, int trips) {
 
 std::string describe(const std::string& moment, const HandOver& h) {
   return "Two cores " + moment +
-         ": a cache line written in turn by two threads went to the other " + "core and back in " +
+         ": a cache line written in turn by two threads went to the other core and back in " +
          formatted("%.0f", h.median_ns) + " ns (least " + formatted("%.0f", h.least_ns) +
          ", most " + formatted("%.0f", h.most_ns) + ", " + std::to_string(h.rounds) +
-         " rounds): what a step's threads pay for each line of bodies "
-         "or contacts that one writes and the other touches next";
+         " rounds): what a step's threads pay for each line of bodies or contacts that one writes "
+         "and the other touches next";
 }
 
 }  // namespace gp::bench
