@@ -9,6 +9,7 @@
 
 #include "engine/capacity.hpp"
 #include "engine/collision/narrowphase.hpp"
+#include "engine/prefetch.hpp"
 #include "engine/threads.hpp"
 
 namespace gp {
@@ -34,6 +35,12 @@ constexpr std::size_t kCollidedPairsPerBlock = kRunsPerBlock * kCollidedPairsPer
 // Fewer pairs are collided on one thread even where there are more: a second one gains them
 // little, and the contacts it writes are then read on the first by the stages after.
 constexpr std::size_t kParallelPairs = 1024;
+
+// How far ahead of the threads' stores their cache lines are asked for (prefetch.hpp), in
+// manifolds and in contacts: on large_pyramid on two threads, the manifolds took a tenth less
+// time and the contacts' filling in two fifths less.
+constexpr std::size_t kManifoldsAhead = 4;
+constexpr std::size_t kContactsAhead = 8;
 
 // Pairs whose discs' centre gaps are found before their contacts, on one thread: a gap's square
 // root and division, found for pair after pair, overlap, where between two contacts' other work
@@ -178,6 +185,9 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     each_run([&](std::size_t begin, std::size_t end, ContactCursor& run) {
       ContactCursor room;
       for (std::size_t i = begin; i < end; ++i) {
+        if (i + kManifoldsAhead < end) {
+          prefetch_for_writing(&manifolds_[i + kManifoldsAhead], sizeof(ContactManifold));
+        }
         const ShapePair& p = pairs[first + i];
         manifolds_[i] = collide(world.packed(p.first), world.packed(p.second), margin_);
         if (manifolds_[i].count > 0) room.take(manifolds_[i].count);
@@ -187,6 +197,15 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
     contacts.reserve(std::span(runs_).first(runs));
     each_run([&](std::size_t begin, std::size_t end, const ContactCursor& start) {
       ContactCursor next = start;
+      // The slots kContactsAhead contacts on, taken by a cursor of their own.
+      ContactCursor ahead = start;
+      std::size_t pair_ahead = begin;
+      const auto ask_ahead = [&] {
+        while (pair_ahead < end && manifolds_[pair_ahead].count == 0) ++pair_ahead;
+        if (pair_ahead == end) return;
+        contacts.prefetch_for_placing(ahead.take(manifolds_[pair_ahead++].count));
+      };
+      for (std::size_t k = 0; k < kContactsAhead; ++k) ask_ahead();
       // A search for the run's first pair, then one forward scan (warm_start_points).
       auto old = std::lower_bound(
           previous.begin(), previous.end(), WarmStart::pair_key(pairs[first + begin]),
@@ -196,6 +215,7 @@ void CollisionDetection::find_contacts(StepContext& ctx) {
         if (m.count == 0) continue;
         const ShapePair& p = pairs[first + i];
         const ContactSlot slot = next.take(m.count);
+        ask_ahead();
         const std::span<ContactPointState> points = contacts.points(slot);
         fill_contact(p, shapes, m, ctx.start, contacts.place(slot), points);
         warm_start_points(old, previous.end(), WarmStart::pair_key(p), impulse_scale, m, points);
