@@ -14,6 +14,7 @@
 #include "engine/geometry/aabb.hpp"
 #include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/transform.hpp"
+#include "engine/prefetch.hpp"
 
 namespace gp {
 
@@ -53,6 +54,8 @@ class WorldBounds {
   void place(std::size_t i, const Aabb& box) { boxes_[i] = box; }
 
   std::size_t size() const { return boxes_.size(); }
+  /// Asks for the cache line that placing shape `i` writes (prefetch.hpp).
+  void prefetch_for_placing(std::size_t i) const { prefetch_for_writing(&boxes_[i], sizeof(Aabb)); }
   /// The box of shape `i` as placed [m].
   const Aabb& bounds(std::size_t i) const { return boxes_[i]; }
 

@@ -9,6 +9,7 @@
 
 #include "engine/geometry/packed_geometry.hpp"
 #include "engine/geometry/world_shape.hpp"
+#include "engine/prefetch.hpp"
 
 namespace gp {
 
@@ -32,6 +33,14 @@ class WorldShapes {
   void place(std::size_t i, const PackedGeometry& local, const Transform& transform);
 
   std::size_t size() const { return shapes_.size(); }
+  /// Asks for the cache lines that placing shape `i` again writes (prefetch.hpp).
+  void prefetch_for_placing(std::size_t i) const {
+    const PackedGeometry& shape = shapes_[i];
+    prefetch_for_writing(&shape, sizeof(PackedGeometry));
+    if (shape.kind() != ShapeKind::kPolygon) return;
+    const PolygonView polygon = shape.polygon();
+    prefetch_for_writing(polygon.vertices.data(), (2 * polygon.vertices.size() + 2) * sizeof(Vec2));
+  }
   /// The box of shape `i` as placed, without the view around it.
   Aabb bounds(std::size_t i) const {
     const PackedGeometry& shape = shapes_[i];
