@@ -25,8 +25,8 @@ CoreCapacity core_capacity(const std::vector<CapacityRound>& rounds) {
     cores.push_back(cores_at_once(r));
     alone.push_back(r.alone);
   }
-  return {median(cores), *std::min_element(cores.begin(), cores.end()),
-          *std::max_element(cores.begin(), cores.end()), 1e3 * median(alone), rounds.size()};
+  const Spread spread = spread_of(cores);
+  return {spread.median, spread.min, spread.max, 1e3 * median(alone), rounds.size()};
 }
 
 CoreCapacity measure_core_capacity(const Workload& w, int rounds) {

@@ -1,6 +1,5 @@
 #include "verification/bench/core_hand_over.hpp"
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
@@ -13,8 +12,8 @@ namespace gp::bench {
 
 HandOver hand_over(const std::vector<double>& round_trips_ns) {
   if (round_trips_ns.empty()) throw std::invalid_argument("hand_over: no rounds");
-  const auto [least, most] = std::minmax_element(round_trips_ns.begin(), round_trips_ns.end());
-  return {median(round_trips_ns), *least, *most, static_cast<int>(round_trips_ns.size())};
+  const Spread spread = spread_of(round_trips_ns);
+  return {spread.median, spread.min, spread.max, static_cast<int>(round_trips_ns.size())};
 }
 
 namespace {

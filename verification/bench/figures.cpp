@@ -27,16 +27,18 @@ double sample_stddev(const std::vector<double>& v) {
 
 }  // namespace
 
-Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
-                   double moved_m) {
-  return figures_of(w, std::move(engine), ms.size(),
-                    {median(ms), *std::min_element(ms.begin(), ms.end()),
-                     *std::max_element(ms.begin(), ms.end()), sample_stddev(ms)},
-                    moved_m);
+Spread spread_of(const std::vector<double>& v) {
+  const auto [min, max] = std::minmax_element(v.begin(), v.end());
+  return {median(v), *min, *max, sample_stddev(v)};
 }
 
-Figures figures_of(const Workload& w, std::string engine, std::size_t repetitions,
-                   const TimeSpread& ms, double moved_m) {
+Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
+                   double moved_m) {
+  return figures_of(w, std::move(engine), ms.size(), spread_of(ms), moved_m);
+}
+
+Figures figures_of(const Workload& w, std::string engine, std::size_t repetitions, const Spread& ms,
+                   double moved_m) {
   Figures f{w.name, std::move(engine), repetitions};
   f.median_ms = ms.median;
   f.min_ms = ms.min;

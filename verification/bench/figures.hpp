@@ -28,14 +28,16 @@ struct Figures {
 /// The median of `v` (not empty): the middle value, or the mean of the two middle ones.
 double median(std::vector<double> v);
 
-/// Median, min, max and sample standard deviation of repetitions' wall times [ms].
-struct TimeSpread {
+/// Median, min, max and sample standard deviation of a set of measurements (0 for one).
+struct Spread {
   double median, min, max, stddev;
 };
+/// The spread of `v` (not empty).
+Spread spread_of(const std::vector<double>& v);
 
 /// The figures of `repetitions` runs of `w` in `engine` whose wall times spread as `ms`.
-Figures figures_of(const Workload& w, std::string engine, std::size_t repetitions,
-                   const TimeSpread& ms, double moved_m);
+Figures figures_of(const Workload& w, std::string engine, std::size_t repetitions, const Spread& ms,
+                   double moved_m);
 /// The figures of the repetitions of `w` in `engine` that took `ms` (not empty) each.
 Figures figures_of(const Workload& w, std::string engine, const std::vector<double>& ms,
                    double moved_m);
