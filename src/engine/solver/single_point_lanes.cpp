@@ -86,7 +86,8 @@ struct FourDirections {
 
 // `value` − (−j d m) in the lanes of `lanes`, `value` in the others, from `minus_j` = −j, d and m:
 // the share left out is masked to +0 first, and v − (+0) is v to the bit, where v − (−x) is v + x.
-// No blend lies on the chain through the velocities then (3 cycles on Intel's cores).
+// No blend lies on the chain through the velocities then (several micro-ops on Intel's cores, one
+// on Zen 4).
 [[gnu::target("avx2")]] inline Four add_share(Four value, Four minus_j, Four along, Four inverse,
                                               Four lanes) {
   return _mm256_sub_pd(value,
