@@ -9,6 +9,7 @@
 #include <limits>
 #include <mutex>
 #include <span>
+#include <thread>
 #include <vector>
 
 #include <tbb/task_arena.h>
@@ -231,6 +232,45 @@ TEST_CASE("The passes' largest value is the same on any number of threads") {
   for (std::uint32_t i = 0; i < g.contacts.size(); ++i) largest = std::max(largest, value(i));
   CHECK(one == largest);
   CHECK(two == largest);
+}
+
+TEST_CASE("A stage with little beside its largest island stays on the calling thread") {
+  // A chain of 3000 contacts and 200 islands of one contact each beside it (fewer than
+  // kSharedStageContacts): on two threads every contact is solved by the thread that runs the
+  // pass, where its caches hold them. With 2500 islands beside it the stage is shared, and the
+  // visit is still every contact once.
+  for (const std::size_t beside : {std::size_t{200}, std::size_t{2500}}) {
+    const std::size_t chained = 3000;
+    std::vector<std::pair<gp::BodyId, gp::BodyId>> links{{1, 0}};
+    for (gp::BodyId b = 1; b < chained; ++b) links.emplace_back(b, b + 1);
+    for (std::size_t k = 0; k < beside; ++k) {
+      const auto first = static_cast<gp::BodyId>(chained + 1 + 2 * k);
+      links.emplace_back(first, first + 1);
+    }
+    const Graph g(chained + 1 + 2 * beside, links);
+    gp::ContactBatches batches;
+    batches.build(g.contacts, {}, g.inertia, g.positions, {0, kColouredAbove});
+    std::mutex guard;
+    std::vector<std::thread::id> by;
+    std::vector<int> seen(g.contacts.size(), 0);
+    const std::thread::id caller = std::this_thread::get_id();
+    tbb::task_arena(2).execute([&] {
+      batches.run([&](std::uint32_t i) {
+        // A few microseconds a contact, long enough for an idle worker to wake and take tasks.
+        volatile double work = 0.0;
+        for (int k = 0; k < 2000; ++k) work = work + 1.0;
+        const std::lock_guard lock(guard);
+        by.push_back(std::this_thread::get_id());
+        ++seen[i];
+        return 0.0;
+      });
+    });
+    INFO(beside << " islands beside the chain");
+    CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+    if (beside < gp::ContactBatches::kSharedStageContacts) {
+      CHECK(std::all_of(by.begin(), by.end(), [&](std::thread::id t) { return t == caller; }));
+    }
+  }
 }
 
 TEST_CASE("A large island is visited part by part, then the contacts between parts") {

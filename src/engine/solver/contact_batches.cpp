@@ -1,5 +1,6 @@
 #include "engine/solver/contact_batches.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -71,6 +72,23 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
     place_task(contacts, {contact_scratch_.data(), count});
   }
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
+  choose_shared_stages();
+}
+
+void ContactBatches::choose_shared_stages() {
+  shared_stage_.clear();
+  std::size_t first = 0;
+  for (const std::uint32_t last : stage_end_) {
+    std::uint32_t largest = 0;
+    std::uint32_t all = 0;
+    for (std::size_t t = first; t < last; ++t) {
+      const std::uint32_t size = task_end_[t] - (t == 0 ? 0 : task_end_[t - 1]);
+      largest = std::max(largest, size);
+      all += size;
+    }
+    shared_stage_.push_back(all - largest >= kSharedStageContacts ? 1 : 0);
+    first = last;
+  }
 }
 
 bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmStart> last_kept,

@@ -50,9 +50,10 @@ class ContactBatches {
  public:
   /// Contacts of a colour a thread takes at a time.
   static constexpr std::size_t kContactsPerChunk = 128;
-  /// A colour of fewer contacts is solved on one thread: sharing a colour costs the threads a
-  /// meeting of some microseconds, what a thread takes to solve about this many of its contacts.
-  static constexpr std::size_t kSharedColourContacts = 2048;
+  /// A stage whose tasks beside its largest hold fewer contacts is solved on one thread: sharing
+  /// a stage costs the threads a meeting of some microseconds, what a thread takes to solve about
+  /// this many contacts, and an island's contacts solved on the other core leave its caches.
+  static constexpr std::size_t kSharedStageContacts = 2048;
   /// The most halvings of an island: 64 parts.
   static constexpr int kMaxPartDepth = 6;
 
@@ -184,9 +185,8 @@ class ContactBatches {
       // The last colour takes the contacts that found every other taken, one after the other.
       const bool colour = stage >= first_colour_stage_ && stage + 1 < stage_end_.size();
       const std::size_t grain = stage < first_colour_stage_ ? 1 : kContactsPerChunk;
-      const bool small_colour = colour && last - first < kSharedColourContacts;
       largest = std::max(largest, reduce_blocks(
-                                      last - first, grain, alone || small_colour, 0.0,
+                                      last - first, grain, alone || shared_stage_[stage] == 0, 0.0,
                                       [&](std::size_t a, std::size_t b, double l) {
                                         return colour ? colour_tasks(first + a, first + b, l)
                                                       : tasks(first + a, first + b, l);
@@ -212,6 +212,8 @@ class ContactBatches {
   void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
             std::size_t parted_above);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
+  /// Which stages go to the threads (kSharedStageContacts), into shared_stage_.
+  void choose_shared_stages();
   /// Places the next task's contacts, `task` in their order (not in order_), into its room in
   /// order_: level after level if they all have one point (see Visit), else as they are.
   void place_task(const ContactSet& contacts, std::span<const std::uint32_t> task);
@@ -229,6 +231,7 @@ class ContactBatches {
   std::vector<std::uint32_t> task_end_;   // per task: one past its last entry in order_
   std::vector<std::uint32_t> stage_end_;  // per stage: one past its last task
   std::size_t first_colour_stage_ = 0;
+  std::vector<char> shared_stage_;  // per stage: 1 where its tasks go to the threads
   std::vector<PartedIsland> parted_;
   std::vector<BodyId> part_bodies_;  // the movable bodies of the island being cut
   // Scratch of the build, per body: while parting, the part a body fell into, as halving bits;
