@@ -32,10 +32,6 @@ constexpr std::size_t kRunsPerBlock = 64;
 // MB. The threads wait for each other twice a block: blocks of 4096 pairs made many_pyramids'
 // narrowphase on two threads a sixth slower.
 constexpr std::size_t kCollidedPairsPerBlock = kRunsPerBlock * kCollidedPairsPerRun;
-// Fewer pairs are collided on one thread even where there are more: a second one gains them
-// little, the contacts it writes are then read on the first by the stages after, and a worker
-// asleep takes about as long to wake (16-22 us on these machines).
-constexpr std::size_t kParallelPairs = 4096;
 
 // How far ahead of the threads' stores their cache lines are asked for (prefetch.hpp), in
 // manifolds and in contacts: on large_pyramid on two threads, the manifolds took a tenth less

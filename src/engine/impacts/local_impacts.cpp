@@ -20,9 +20,6 @@ namespace {
 // they are gathered (a fixed room of slots rather than room per body).
 constexpr std::size_t kSweptPairsPerTask = 128;
 constexpr std::size_t kSweptPairsPerBlock = 8 * kSweptPairsPerTask;
-// Fewer candidate pairs are swept on one thread, as the narrowphase collides them
-// (collision_detection.cpp): their sweeps take less than waking a worker.
-constexpr std::size_t kParallelPairs = 4096;
 
 }  // namespace
 
@@ -38,7 +35,7 @@ void LocalImpacts::classify(StepContext& ctx) {
   // Pairs whose contact touches are the contact solver's: no distance to compute.
   const std::span<const ShapePair> pairs = ctx.pairs;
   const std::vector<std::uint8_t>& touching = ctx.touching_pairs;
-  if (one_thread() || pairs.size() < kParallelPairs) {
+  if (one_thread() || pairs.size() < CollisionDetection::kParallelPairs) {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       if (touching[i] != 0) continue;
       if (const auto tau = impact_of(pairs[i])) pending_.push_back({pairs[i], *tau});
