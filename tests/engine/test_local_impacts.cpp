@@ -188,6 +188,42 @@ TEST_CASE("A disc turned back by an impact stays in the step unless it can pass 
   }
 }
 
+TEST_CASE("After each sub-step the rest of the step is tried as a local pass again",
+          "[FR:Determine-Collision-Response-Over-Time][via:IM:col2D]") {
+  // Two discs at 24 m/s strike walls, the first at x = 0 (τ = 1/480 s), the second at x = 1.5
+  // (τ = 1/200 s); each then returns towards a disc resting on the floor, 0.2 m and 0.14 m away,
+  // which it could pass within the step. Each impact stops a local pass: the first sub-step ends
+  // at the first impact, the local pass tried after it stops at the second, the next sub-step ends
+  // there, and the local pass tried after that finishes the step, handing both approaches to the
+  // contact solver. Sub-stepping on after the first try would end sub-steps at each approach too,
+  // five in all.
+  gp::Space space;
+  space.add_body(wall("left wall", {0.0, -1.0}, {0.0, 2.0}, 1.0));
+  space.add_body(wall("right wall", {1.5, -1.0}, {1.5, 2.0}, 1.0));
+  space.add_body(wall("floor", {-1.0, 0.0}, {2.5, 0.0}, 0.0));
+  const auto resting_left = space.add_body(disc("resting left", {0.5, 0.1}, {0.0, 0.0}, 1.0));
+  const auto resting_right = space.add_body(disc("resting right", {1.06, 0.1}, {0.0, 0.0}, 1.0));
+  const auto flying_left = space.add_body(disc("flying left", {0.15, 0.15}, {-24.0, 0.0}, 1.0));
+  const auto flying_right = space.add_body(disc("flying right", {1.28, 0.15}, {24.0, 0.0}, 1.0));
+  space.step(1.0 / 60);
+  CHECK(gp::SpaceInternals::runner(space).sub_steps() == 2);
+  CHECK(gp::SpaceInternals::runner(space).local_passes() == 3);
+  // Each flying disc ends the step apart from its resting one, on its side, and no energy was
+  // made: of four equal frictionless discs, the squared speeds sum to at most 2 × 24² m²/s².
+  const auto centre_gap = [&space](gp::BodyId a, gp::BodyId b) {
+    return (space.state(a).position - space.state(b).position).norm() - 0.2;
+  };
+  CHECK(centre_gap(resting_left, flying_left) > -2e-4);
+  CHECK(centre_gap(resting_right, flying_right) > -2e-4);
+  CHECK(space.state(flying_left).position.x() < space.state(resting_left).position.x());
+  CHECK(space.state(flying_right).position.x() > space.state(resting_right).position.x());
+  double squared_speeds = 0.0;
+  for (const auto id : {resting_left, resting_right, flying_left, flying_right}) {
+    squared_speeds += space.state(id).velocity.squaredNorm();
+  }
+  CHECK(squared_speeds <= 2 * 24.0 * 24.0 * (1.0 + 1e-12));
+}
+
 TEST_CASE("A step allocates nothing once the scene is warmed up", "[FR:Simulation-Space]") {
   gp::Settings settings;
   settings.gravity = {0.0, -9.81};

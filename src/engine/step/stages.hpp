@@ -6,8 +6,8 @@
 // each impact at its time of impact for its own bodies (exact when every body follows a ballistic
 // path: constant forces and an integrator exact along it). The sub-step pass ends a sub-step of
 // the whole space at the first impact, and repeats until the step is done; it is the fallback
-// when a local pass cannot finish (after its first sub-step, the rest of the step is tried as a
-// local pass once more: StepRunner::step), and the only pass when local impacts are not exact.
+// when a local pass cannot finish (after each sub-step, the rest of the step is tried as a local
+// pass again: StepRunner::step), and the only pass when local impacts are not exact.
 
 #include <cstdint>
 #include <span>

@@ -28,18 +28,19 @@ void StepRunner::step(StepContext& c, double dt) {
   c.impacts.clear();
   c.impacts_this_step = 0;
   // Each sub-step ends at an impact or at the end of the step; impacts are bounded per step.
-  double remaining = dt - run_pass(c, kSubStepPass, dt);
-  // The first sub-step has resolved the step's first impact: the rest of the step is tried as one
-  // local pass again, once, rather than a sub-step per impact (each costs a whole step). A failed
-  // try leaves the state as it was, and its impacts are not kept.
-  if (remaining > 0.0 && runs_local_pass(c)) {
+  // After each, while impacts are still allowed, the rest of the step is tried as one local pass
+  // again rather than a sub-step per impact (each costs a whole step): the impact that stopped
+  // the last try may be behind. A failed try leaves the state as it was, and its impacts are not
+  // kept. Past the limit, only sub-steps resolve what the step's end finds (impacts_allowed).
+  for (double remaining = dt; remaining > 0.0;) {
+    remaining -= run_pass(c, kSubStepPass, remaining);
+    if (remaining <= 0.0 || !runs_local_pass(c) || !c.impacts_allowed()) continue;
     const std::size_t logged = c.impacts.size();
     const int counted = c.impacts_this_step;
     if (run_pass(c, kLocalPass, remaining) > 0.0) return;
     c.impacts.resize(logged);
     c.impacts_this_step = counted;
   }
-  while (remaining > 0.0) remaining -= run_pass(c, kSubStepPass, remaining);
 }
 
 double StepRunner::run_pass(StepContext& c, Pass pass, double h) {
