@@ -149,5 +149,48 @@ TEST_CASE("The summary gives each engine's heap per disc added from rain1000 to 
   CHECK_THAT(out.str(), Catch::Contains("rain4000 (held at the end of the run): ours 1000 B\n"));
 }
 
+TEST_CASE("The summary gives each engine's growth of the time per step from rain1000 on",
+          "[NFR:Performance]") {
+  const auto timed = [](const char* workload, const char* engine, std::size_t bodies,
+                        std::size_t steps, double median_ms, double min_ms) {
+    gp::bench::Figures f{workload, engine, 3};
+    f.median_ms = median_ms;
+    f.min_ms = min_ms;
+    f.bodies = bodies;
+    f.steps = steps;
+    return f;
+  };
+  // Ours: 1000 steps each, 500 → 3000 → 12,000 ms by medians (6× and 24×), 400 → 2000 → 10,000
+  // ms by the fastest runs (5× and 25×). Box2D's rain4000 ran 500 steps: 1200 ms is 2.4 ms a
+  // step against 0.3, 8×. Chipmunk2D has no rain1000, so no growth.
+  const std::vector<gp::bench::Figures> all{
+      timed("rain1000", "ours", 1001, 1000, 500.0, 400.0),
+      timed("rain1000", "box2d", 1001, 1000, 300.0, 300.0),
+      timed("rain4000", "ours", 4001, 1000, 3000.0, 2000.0),
+      timed("rain4000", "box2d", 4001, 500, 1200.0, 1200.0),
+      timed("rain4000", "chipmunk", 4001, 1000, 1000.0, 1000.0),
+      timed("rain16000", "ours", 16001, 1000, 12000.0, 10000.0)};
+  const auto growth = gp::bench::time_growth_over_bodies(all);
+  REQUIRE(growth.size() == 3);
+  CHECK(growth[0].engine == "ours");
+  CHECK(growth[0].workload == "rain4000");
+  CHECK(growth[0].by_medians == Approx(6.0));
+  CHECK(growth[0].by_fastest == Approx(5.0));
+  // 4001 ln 4001 / (1001 ln 1001), by hand: 33,185.5 / 6915.7.
+  CHECK(growth[0].n_log_n == Approx(4.7986).epsilon(1e-4));
+  CHECK(growth[1].workload == "rain16000");
+  CHECK(growth[1].by_medians == Approx(24.0));
+  CHECK(growth[1].by_fastest == Approx(25.0));
+  // 16,001 ln 16,001 / (1001 ln 1001): 154,896 / 6915.7.
+  CHECK(growth[1].n_log_n == Approx(22.398).epsilon(1e-4));
+  CHECK(growth[2].engine == "box2d");
+  CHECK(growth[2].by_medians == Approx(8.0));
+  std::ostringstream out;
+  gp::bench::print_summary(out, all);
+  CHECK_THAT(out.str(), Catch::Contains("ours to rain4000 6.00x and 5.00x (N log N 4.80x); ours "
+                                        "to rain16000 24.00x and 25.00x (N log N 22.40x); box2d "
+                                        "to rain4000 8.00x and 8.00x (N log N 4.80x)\n"));
+}
+
 }  // namespace test_bench_workloads
 }  // namespace

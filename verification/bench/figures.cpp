@@ -47,6 +47,7 @@ Figures figures_of(const Workload& w, std::string engine, std::size_t repetition
   f.body_steps_per_s = body_steps_per_s(w, f.median_ms);
   f.moved_m = moved_m;
   f.bodies = w.scene.bodies.size();
+  f.steps = static_cast<std::size_t>(w.steps);
   return f;
 }
 
@@ -74,6 +75,35 @@ std::vector<std::pair<std::string, double>> heap_per_added_body(const std::vecto
     if (small >= 0.0 && large >= 0.0) per_body.emplace_back(f.engine, (large - small) / 3000.0);
   }
   return per_body;
+}
+
+std::vector<TimeGrowth> time_growth_over_bodies(const std::vector<Figures>& all) {
+  const auto find = [&all](const std::string& workload, const std::string& engine) {
+    const auto found = std::find_if(all.begin(), all.end(), [&](const Figures& f) {
+      return f.workload == workload && f.engine == engine;
+    });
+    return found == all.end() ? nullptr : &*found;
+  };
+  const auto per_step = [](double ms, const Figures& f) {
+    return ms / static_cast<double>(f.steps);
+  };
+  const auto n_log_n = [](const Figures& f) {
+    const auto n = static_cast<double>(f.bodies);
+    return n * std::log(n);
+  };
+  std::vector<TimeGrowth> growth;
+  for (const Figures& small : all) {
+    if (small.workload != "rain1000" || small.steps == 0 || small.bodies < 2) continue;
+    for (const char* workload : {"rain4000", "rain16000"}) {
+      const Figures* large = find(workload, small.engine);
+      if (large == nullptr || large->steps == 0) continue;
+      growth.push_back({small.engine, workload,
+                        per_step(large->median_ms, *large) / per_step(small.median_ms, small),
+                        per_step(large->min_ms, *large) / per_step(small.min_ms, small),
+                        n_log_n(*large) / n_log_n(small)});
+    }
+  }
+  return growth;
 }
 
 double body_steps_per_s(const Workload& w, double ms) {

@@ -23,6 +23,7 @@ struct Figures {
   double moved_m = -1.0;     ///< negative when the workload watches no body
   double heap_bytes = -1.0;  ///< held at the end of a run; negative when not measured
   std::size_t bodies = 0;    ///< of the workload's scene
+  std::size_t steps = 0;     ///< of one run
 };
 
 /// The median of `v` (not empty): the middle value, or the mean of the two middle ones.
@@ -50,6 +51,20 @@ std::optional<double> ours_over_engine(const std::vector<Figures>& all, const Fi
 /// their heaps over the 3000 discs between them, which cancels what does not grow with the
 /// bodies. One entry per engine that has heap figures of both, in the order of `all`.
 std::vector<std::pair<std::string, double>> heap_per_added_body(const std::vector<Figures>& all);
+
+/// How one engine's time per step grows from rain1000 to a larger rain [×], by the medians and by
+/// the fastest runs, beside N log N's growth over the two scenes' bodies: issue 17 asks the time
+/// per step from 1000 to 16,000 discs to grow no faster than that.
+struct TimeGrowth {
+  std::string engine;
+  std::string workload;  ///< the larger rain
+  double by_medians = 0.0;
+  double by_fastest = 0.0;
+  double n_log_n = 0.0;
+};
+/// One entry per engine and larger rain (rain4000, rain16000) that `all` has figures of beside
+/// the engine's rain1000, in the order of `all`.
+std::vector<TimeGrowth> time_growth_over_bodies(const std::vector<Figures>& all);
 
 /// Bodies (static ones included, as every engine steps them) times steps, per second of a run of
 /// `w` that took `ms`.

@@ -100,6 +100,19 @@ void print_summary(std::ostream& out, const std::vector<Figures>& all) {
     }
     out << "\n";
   }
+  const auto growth = time_growth_over_bodies(all);
+  if (!growth.empty()) {
+    out << "time per step from rain1000, by medians and by the fastest runs, against N log N of "
+           "the bodies:";
+    const char* separator = " ";
+    for (const TimeGrowth& g : growth) {
+      out << separator << g.engine << " to " << g.workload << " " << formatted("%.2f", g.by_medians)
+          << "x and " << formatted("%.2f", g.by_fastest) << "x (N log N "
+          << formatted("%.2f", g.n_log_n) << "x)";
+      separator = "; ";
+    }
+    out << "\n";
+  }
 }
 
 }  // namespace gp::bench
