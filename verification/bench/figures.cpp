@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "verification/bench/bench_engine.hpp"
 
@@ -23,6 +24,16 @@ double sample_stddev(const std::vector<double>& v) {
   double squares = 0.0;
   for (double x : v) squares += (x - mean) * (x - mean);
   return std::sqrt(squares / static_cast<double>(v.size() - 1));
+}
+
+// The figures of `workload` in `engine` among `all`, which holds at most one of each pair (as
+// figures() makes them), or none.
+const Figures* figures_for(const std::vector<Figures>& all, std::string_view workload,
+                           std::string_view engine) {
+  const auto found = std::find_if(all.begin(), all.end(), [&](const Figures& f) {
+    return f.workload == workload && f.engine == engine;
+  });
+  return found == all.end() ? nullptr : &*found;
 }
 
 }  // namespace
@@ -52,20 +63,15 @@ Figures figures_of(const Workload& w, std::string engine, std::size_t repetition
 }
 
 std::optional<double> ours_over_engine(const std::vector<Figures>& all, const Figures& f) {
-  for (const Figures& ours : all) {
-    if (ours.workload == f.workload && ours.engine == engine_label(Engine::Ours)) {
-      return ours.median_ms / f.median_ms;
-    }
-  }
-  return std::nullopt;
+  const Figures* ours = figures_for(all, f.workload, engine_label(Engine::Ours));
+  if (ours == nullptr) return std::nullopt;
+  return ours->median_ms / f.median_ms;
 }
 
 std::vector<std::pair<std::string, double>> heap_per_added_body(const std::vector<Figures>& all) {
   const auto heap_of = [&all](const std::string& workload, const std::string& engine) {
-    for (const Figures& f : all) {
-      if (f.workload == workload && f.engine == engine && f.heap_bytes >= 0.0) return f.heap_bytes;
-    }
-    return -1.0;
+    const Figures* f = figures_for(all, workload, engine);
+    return f != nullptr && f->heap_bytes >= 0.0 ? f->heap_bytes : -1.0;
   };
   std::vector<std::pair<std::string, double>> per_body;
   for (const Figures& f : all) {
@@ -78,12 +84,6 @@ std::vector<std::pair<std::string, double>> heap_per_added_body(const std::vecto
 }
 
 std::vector<TimeGrowth> time_growth_over_bodies(const std::vector<Figures>& all) {
-  const auto find = [&all](const std::string& workload, const std::string& engine) {
-    const auto found = std::find_if(all.begin(), all.end(), [&](const Figures& f) {
-      return f.workload == workload && f.engine == engine;
-    });
-    return found == all.end() ? nullptr : &*found;
-  };
   const auto per_step = [](double ms, const Figures& f) {
     return ms / static_cast<double>(f.steps);
   };
@@ -95,7 +95,7 @@ std::vector<TimeGrowth> time_growth_over_bodies(const std::vector<Figures>& all)
   for (const Figures& small : all) {
     if (small.workload != "rain1000" || small.steps == 0 || small.bodies < 2) continue;
     for (const char* workload : {"rain4000", "rain16000"}) {
-      const Figures* large = find(workload, small.engine);
+      const Figures* large = figures_for(all, workload, small.engine);
       if (large == nullptr || large->steps == 0) continue;
       growth.push_back({small.engine, workload,
                         per_step(large->median_ms, *large) / per_step(small.median_ms, small),
