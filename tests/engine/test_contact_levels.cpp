@@ -1,12 +1,14 @@
 // The velocity and position passes over an island of one-point contacts, taken by levels (and,
 // where the CPU has AVX2, a level's contacts four at a time): the same bits as the passes one
-// contact after the other in the contacts' order, on one thread and on two.
+// contact after the other in the contacts' order, on one thread and on two, with the contacts
+// left in their own order or stored in the passes'.
 
 #include <algorithm>
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -22,6 +24,7 @@ namespace test_contact_levels {
 
 constexpr int kColumns = 7;
 constexpr int kRows = 6;
+constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
 
 // Discs in a grid of kColumns × kRows (body 1 + column + kColumns · row), the bottom row on the
 // static ground (body 0), each touching its neighbours to the right, above and above-right, the
@@ -125,24 +128,53 @@ void check_same_bits(const DiscGrid& levels, const DiscGrid& in_order) {
   }
 }
 
+// The contacts stored where the passes visit them, as ContactBatches::store_in_order does for a
+// large set, or left in their own order.
+enum class Storage { kOwnOrder, kSolveOrder };
+
+// `pass(batches)` on `grid`'s contacts by levels, stored as `storage` says; they are back in their
+// own order after.
+template <typename Pass>
+void by_levels(DiscGrid& grid, Storage storage, const Pass& pass) {
+  gp::ContactBatches batches;
+  batches.build(grid.contacts, {}, grid.inertia, grid.positions,
+                {4096, 0, storage == Storage::kSolveOrder ? 0 : kNever});
+  batches.store_in_order(grid.contacts);
+  if (storage == Storage::kSolveOrder) {
+    // Moved: the levels put the contacts out of their own (shuffled) order.
+    REQUIRE(batches.stored_at().size() == grid.contacts.size());
+    std::size_t moved = 0;
+    for (std::uint32_t i = 0; i < grid.contacts.size(); ++i) moved += batches.stored_at()[i] != i;
+    CHECK(moved > grid.contacts.size() / 2);
+  } else {
+    CHECK(batches.stored_at().empty());
+  }
+  pass(batches);
+  batches.restore_order(grid.contacts);
+}
+
 TEST_CASE("Velocity passes by levels give the same bits as in the contacts' order",
           "[via:GD:impulse][via:DD:impulseV]") {
   constexpr int kPasses = 6;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     for (const int threads : {1, 2}) {
-      INFO("seed " << seed << ", " << threads << " threads");
-      DiscGrid in_order(seed);
-      const int passes_in_order =
-          gp::solve_velocities(in_order.contacts, in_order.inertia, kPasses, 0.0, in_order.state);
-      DiscGrid levels(seed);
-      gp::ContactBatches batches;
-      batches.build(levels.contacts, {}, levels.inertia, levels.positions, {4096, 0});
-      const int passes_levels = tbb::task_arena(threads).execute([&] {
-        return gp::solve_velocities(batches, levels.contacts, levels.inertia, {kPasses, 0.0},
-                                    levels.state);
-      });
-      CHECK(passes_levels == passes_in_order);
-      check_same_bits(levels, in_order);
+      for (const Storage storage : {Storage::kOwnOrder, Storage::kSolveOrder}) {
+        INFO("seed " << seed << ", " << threads << " threads, stored in solve order "
+                     << (storage == Storage::kSolveOrder));
+        DiscGrid in_order(seed);
+        const int passes_in_order =
+            gp::solve_velocities(in_order.contacts, in_order.inertia, kPasses, 0.0, in_order.state);
+        DiscGrid levels(seed);
+        int passes_levels = 0;
+        by_levels(levels, storage, [&](const gp::ContactBatches& batches) {
+          passes_levels = tbb::task_arena(threads).execute([&] {
+            return gp::solve_velocities(batches, levels.contacts, levels.inertia, {kPasses, 0.0},
+                                        levels.state);
+          });
+        });
+        CHECK(passes_levels == passes_in_order);
+        check_same_bits(levels, in_order);
+      }
     }
   }
 }
@@ -157,23 +189,27 @@ TEST_CASE("Position passes by levels give the same bits as in the contacts' orde
       gp::PositionCorrection one;
       one.correct(in_order.contacts, {in_order.shapes, in_order.inertia, in_order.detected},
                   kLimits, in_order.state);
-      DiscGrid levels(seed);
-      gp::ContactBatches batches;
-      batches.build(levels.contacts, {}, levels.inertia, levels.positions, {4096, 0});
-      gp::PositionCorrection by_levels;
-      const std::vector<gp::Vec2> before = levels.state.position;
-      tbb::task_arena(threads).execute([&] {
-        by_levels.correct(batches, levels.contacts,
-                          {levels.shapes, levels.inertia, levels.detected}, kLimits, levels.state);
-      });
-      for (std::size_t b = 0; b < levels.state.position.size(); ++b) {
-        INFO("body " << b);
-        CHECK(bits(levels.state.position[b].x()) == bits(in_order.state.position[b].x()));
-        CHECK(bits(levels.state.position[b].y()) == bits(in_order.state.position[b].y()));
-        CHECK(bits(levels.state.angle[b]) == bits(in_order.state.angle[b]));
+      for (const Storage storage : {Storage::kOwnOrder, Storage::kSolveOrder}) {
+        INFO("stored in solve order " << (storage == Storage::kSolveOrder));
+        DiscGrid levels(seed);
+        gp::PositionCorrection correction;
+        const std::vector<gp::Vec2> before = levels.state.position;
+        by_levels(levels, storage, [&](const gp::ContactBatches& batches) {
+          tbb::task_arena(threads).execute([&] {
+            correction.correct(batches, levels.contacts,
+                               {levels.shapes, levels.inertia, levels.detected}, kLimits,
+                               levels.state);
+          });
+        });
+        for (std::size_t b = 0; b < levels.state.position.size(); ++b) {
+          INFO("body " << b);
+          CHECK(bits(levels.state.position[b].x()) == bits(in_order.state.position[b].x()));
+          CHECK(bits(levels.state.position[b].y()) == bits(in_order.state.position[b].y()));
+          CHECK(bits(levels.state.angle[b]) == bits(in_order.state.angle[b]));
+        }
+        // The passes moved the discs: the comparison is not of untouched states.
+        CHECK(levels.state.position != before);
       }
-      // The passes moved the discs: the comparison is not of untouched states.
-      CHECK(levels.state.position != before);
     }
   }
 }

@@ -1,10 +1,12 @@
 // Where ContactSet puts contacts: reserve hands out slots in order, as appending one by one would,
-// and a contact placed in reused room starts from zero, against layouts worked out by hand.
+// a contact placed in reused room starts from zero, and reorder moves contacts as a permutation
+// says, against layouts worked out by hand.
 
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "engine/capacity.hpp"
 #include "engine/solver/contact_set.hpp"
@@ -100,6 +102,42 @@ TEST_CASE("bounce velocities stay with their points and go with a clear", "[cont
   CHECK(set.bounce_velocities(added)[0] == 0.0);
   set.clear();
   CHECK_FALSE(set.keeps_bounce_velocities());
+}
+
+TEST_CASE("reorder moves each one-point contact with its point and bounce, restore_order back",
+          "[contact_set]") {
+  gp::ContactSet set;
+  constexpr std::size_t kContacts = 10;
+  for (std::size_t i = 0; i < kContacts; ++i) set.append(1);
+  CHECK(set.single_points());
+  set.keep_bounce_velocities(true);
+  for (std::size_t i = 0; i < kContacts; ++i) {
+    set[i].body_a = static_cast<gp::BodyId>(100 + i);
+    set.points(set[i])[0].normal_impulse = static_cast<double>(i);
+    set.bounce_velocities(set[i])[0] = -static_cast<double>(i);
+  }
+  // Contact k goes to to[k]: the cycles (0 4 2), (1 3) and (5 8 7 6), and 9 stays.
+  const std::array<std::uint32_t, kContacts> to{4, 3, 0, 1, 2, 8, 5, 6, 7, 9};
+  std::vector<bool> moved;
+  set.reorder(to, moved);
+  for (std::size_t k = 0; k < kContacts; ++k) {
+    INFO("contact " << k);
+    const gp::Contact& c = set[to[k]];
+    CHECK(c.body_a == 100 + k);
+    CHECK(c.first_point == to[k]);
+    CHECK(set.points(c)[0].normal_impulse == static_cast<double>(k));
+    CHECK(set.bounce_velocities(c)[0] == -static_cast<double>(k));
+  }
+  set.restore_order(to, moved);
+  for (std::size_t i = 0; i < kContacts; ++i) {
+    INFO("index " << i);
+    CHECK(set[i].body_a == 100 + i);
+    CHECK(set[i].first_point == i);
+    CHECK(set.points(set[i])[0].normal_impulse == static_cast<double>(i));
+    CHECK(set.bounce_velocities(set[i])[0] == -static_cast<double>(i));
+  }
+  set.append(2);
+  CHECK_FALSE(set.single_points());
 }
 
 TEST_CASE("a pile's contacts appended from none take a few allocations and keep an eighth more",

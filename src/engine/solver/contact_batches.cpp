@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include <tbb/parallel_invoke.h>
 
@@ -27,7 +28,11 @@ constexpr std::size_t kParallelChecks = 8192;
 void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart> last_kept,
                            const BodyInertia& inertia, std::span<const Vec2> positions,
                            const IslandSplitting& splitting) {
+  stored_ = false;
   if (holds_for(contacts, last_kept, inertia, splitting)) return;
+  // The last build's places are found anew; their room serves the build as scratch.
+  if (stored_at_.capacity() > contact_scratch_.capacity()) stored_at_.swap(contact_scratch_);
+  stored_at_.clear();
   islands_.find(contacts, inertia);
   order_.clear();
   task_end_.clear();
@@ -73,6 +78,31 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
   }
   if (any_coloured) colour(contacts, inertia, splitting.coloured_above);
   choose_shared_stages();
+  if (contacts.single_points() && contacts.size() > splitting.stored_in_order_above &&
+      order_.size() == contacts.size()) {
+    index_in_storage_order();
+  }
+}
+
+void ContactBatches::index_in_storage_order() {
+  // In the scratch's room, which the build no longer needs: one array a contact, not two.
+  stored_at_.swap(contact_scratch_);
+  stored_at_.resize(order_.size());
+  for (std::uint32_t e = 0; e < order_.size(); ++e) stored_at_[order_[e]] = e;
+  for (std::uint32_t& i : islands_.order) i = stored_at_[i];
+  std::iota(order_.begin(), order_.end(), std::uint32_t{0});
+}
+
+void ContactBatches::store_in_order(ContactSet& contacts) {
+  if (stored_at_.empty()) return;
+  contacts.reorder(stored_at_, moved_);
+  stored_ = true;
+}
+
+void ContactBatches::restore_order(ContactSet& contacts) {
+  if (!stored_) return;
+  contacts.restore_order(stored_at_, moved_);
+  stored_ = false;
 }
 
 void ContactBatches::choose_shared_stages() {
@@ -97,7 +127,8 @@ bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmS
   bool same = built_contacts_ == contacts.size() && last_kept.size() == contacts.point_count() &&
               movable_.size() == bodies &&
               built_splitting_.parted_above == splitting.parted_above &&
-              built_splitting_.coloured_above == splitting.coloured_above;
+              built_splitting_.coloured_above == splitting.coloured_above &&
+              built_splitting_.stored_in_order_above == splitting.stored_in_order_above;
   // Pairs are unique and the points kept in the contacts' order: each contact's points finding
   // its own pair where they were kept makes the two lists of contacts the same.
   const auto pairs_kept = [&](std::size_t first, std::size_t last, bool kept) {

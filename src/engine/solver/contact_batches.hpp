@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -40,10 +41,13 @@ class ContactsInOrder {
   std::size_t size_;
 };
 
-/// Which islands ContactBatches cuts into parts or colours, by their number of contacts; 0: none.
+/// Which islands ContactBatches cuts into parts or colours, by their number of contacts (0:
+/// none), and which sets of contacts it stores in the order of solving.
 struct IslandSplitting {
   std::size_t parted_above = 0;    ///< Settings::island_part_contacts
   std::size_t coloured_above = 0;  ///< Settings::coloured_island_contacts, before parting
+  /// Settings::stored_in_order_contacts; by default none.
+  std::size_t stored_in_order_above = std::numeric_limits<std::size_t>::max();
 };
 
 class ContactBatches {
@@ -75,8 +79,25 @@ class ContactBatches {
              const BodyInertia& inertia, std::span<const Vec2> positions,
              const IslandSplitting& splitting);
 
-  /// The islands of the contacts build was given.
+  /// The islands of the contacts build was given; once store_in_order has moved them, of the
+  /// contacts where it put them.
   const ContactIslands& islands() const { return islands_; }
+
+  /// Moves `contacts`, those build was given, to the order in which the passes visit them, where
+  /// build chose to (a set of one-point contacts of more than splitting.stored_in_order_above,
+  /// every contact in an island): the passes then
+  /// walk them one after the other instead of gathering them from the whole set. The result is the
+  /// same to the bit, as the passes visit the same contacts in the same order. Until
+  /// restore_order, contact indices (of the passes, the islands and the contact set) are those of
+  /// that order, and stored_at() gives, per contact of the contacts' own order, its index.
+  void store_in_order(ContactSet& contacts);
+  /// Puts `contacts` back in their own order (by pair of shapes), if store_in_order moved them.
+  void restore_order(ContactSet& contacts);
+  /// While the contacts are stored in order: per contact of their own order, its index in that
+  /// order; else empty.
+  std::span<const std::uint32_t> stored_at() const {
+    return stored_ ? std::span<const std::uint32_t>(stored_at_) : std::span<const std::uint32_t>();
+  }
 
   /// How a pass visits a task's contacts. Levels: a contact's level is one more than the highest
   /// level of the task's contacts before it that share a movable body with it. A level's contacts
@@ -218,6 +239,9 @@ class ContactBatches {
   /// order_: level after level if they all have one point (see Visit), else as they are.
   void place_task(const ContactSet& contacts, std::span<const std::uint32_t> task);
   bool levelled(std::size_t t) const { return levels_of_[t].last > levels_of_[t].first; }
+  /// Of a build whose contacts are to be stored in order: finds stored_at_ from order_, and makes
+  /// order_ and the islands' contact indices those of the contacts once stored in order.
+  void index_in_storage_order();
   void halve_bodies(std::span<const Vec2> positions, std::uint32_t first, std::uint32_t last,
                     int depth, std::uint32_t code);
 
@@ -249,6 +273,12 @@ class ContactBatches {
   };
   std::vector<Levels> levels_of_;
   std::vector<std::uint32_t> level_end_;  // per level: one past its last entry in order_
+  // Of a build whose contacts are stored in order: per contact of their own order, its entry in
+  // order_, which is then its index (order_ lists 0, 1, 2, ...); else empty. It and
+  // contact_scratch_ hand one room to and fro: the scratch's between builds, the places' during.
+  std::vector<std::uint32_t> stored_at_;
+  bool stored_ = false;      // between store_in_order and restore_order
+  std::vector<bool> moved_;  // per contact, scratch of store_in_order and restore_order
 };
 
 }  // namespace gp

@@ -97,4 +97,37 @@ Contact& ContactSet::place(const ContactSlot& slot) {
   return c;
 }
 
+void ContactSet::reorder(std::span<const std::uint32_t> to, std::vector<bool>& moved) {
+  moved.assign(size(), false);
+  // Cycle by cycle: each contact goes to to[its index], taking the place of the one there.
+  for (std::uint32_t start = 0; start < size(); ++start) {
+    if (moved[start]) continue;
+    Single held = take(start);
+    for (std::uint32_t next = to[start]; next != start; next = to[next]) {
+      const Single displaced = take(next);
+      put(next, held);
+      moved[next] = true;
+      held = displaced;
+    }
+    put(start, held);
+    moved[start] = true;
+  }
+}
+
+void ContactSet::restore_order(std::span<const std::uint32_t> to, std::vector<bool>& moved) {
+  moved.assign(size(), false);
+  // Cycle by cycle: each index takes from the next of its cycle, the last from the first, held.
+  for (std::uint32_t start = 0; start < size(); ++start) {
+    if (moved[start]) continue;
+    const Single first = take(start);
+    std::uint32_t i = start;
+    for (std::uint32_t next = to[i]; next != start; i = next, next = to[i]) {
+      put(i, take(next));
+      moved[i] = true;
+    }
+    put(i, first);
+    moved[i] = true;
+  }
+}
+
 }  // namespace gp

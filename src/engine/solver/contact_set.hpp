@@ -124,6 +124,16 @@ class ContactSet {
   void keep_bounce_velocities(bool keep);
   bool keeps_bounce_velocities() const { return keeps_bounces_; }
 
+  /// Whether every contact has one point: each point then stands at its contact's own index, and
+  /// the contacts can be moved about in place (reorder).
+  bool single_points() const { return end_.block == 0; }
+  /// Moves the contact at each index k, with its point and bounce, to index `to[k]`, in place:
+  /// `to` is a permutation of the contacts' indices, and every contact has one point
+  /// (single_points). `moved` is scratch.
+  void reorder(std::span<const std::uint32_t> to, std::vector<bool>& moved);
+  /// Undoes reorder(to, moved): each index k takes back the contact at `to[k]`.
+  void restore_order(std::span<const std::uint32_t> to, std::vector<bool>& moved);
+
   /// Removes the contacts for which `drop(contact)` is true, keeping the others' order.
   template <typename Predicate>
   void erase_if(Predicate drop) {
@@ -162,6 +172,21 @@ class ContactSet {
     }
   }
   void grow();
+  /// A contact, its point and its bounce, as reorder moves them.
+  struct Single {
+    Contact contact;
+    ContactPointState point;
+    double bounce;
+  };
+  Single take(std::uint32_t i) const {
+    return {contacts_[i], points_[i], keeps_bounces_ ? bounces_[i] : 0.0};
+  }
+  void put(std::uint32_t i, const Single& single) {
+    contacts_[i] = single.contact;
+    contacts_[i].first_point = i;
+    points_[i] = single.point;
+    if (keeps_bounces_) bounces_[i] = single.bounce;
+  }
 
   // Each array's first entries, up to end_, are in use; the rest is room.
   TrivialRoom<Contact> contacts_;

@@ -16,7 +16,9 @@ PositionLimits position_limits(const Settings& s) {
 void ContactSolver::prepare(StepContext& c) {
   batches_.build(c.contacts, c.warm_starts, c.inertia, c.start.position,
                  {static_cast<std::size_t>(c.settings.island_part_contacts),
-                  static_cast<std::size_t>(c.settings.coloured_island_contacts)});
+                  static_cast<std::size_t>(c.settings.coloured_island_contacts),
+                  static_cast<std::size_t>(c.settings.stored_in_order_contacts)});
+  batches_.store_in_order(c.contacts);
   before_impulses_.take(c.state);
   prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
                          c.state);
@@ -51,7 +53,7 @@ void ContactSolver::move_by_impulses(StepContext& c) {
 }
 
 void ContactSolver::solve_speculative(StepContext& c) {
-  gp::solve_speculative(c, speculative_);
+  gp::solve_speculative(c, batches_.stored_at(), speculative_);
   positions_.correct(c.speculative_contacts, {c.shapes, c.inertia, c.start},
                      position_limits(c.settings), c.state);
   c.speculative_contacts.clear();
@@ -60,6 +62,10 @@ void ContactSolver::solve_speculative(StepContext& c) {
 void ContactSolver::correct_positions(StepContext& c) {
   positions_.correct(batches_, c.contacts, {c.shapes, c.inertia, c.start},
                      position_limits(c.settings), c.state);
+}
+
+void ContactSolver::restore_order(StepContext& c) {
+  batches_.restore_order(c.contacts);
 }
 
 }  // namespace gp

@@ -17,8 +17,10 @@ struct StepContext;
 
 class ContactSolver {
  public:
-  /// Each point's effective masses, target and bounce (prepare_contacts, from the start state),
-  /// then the impulses carried over from the last sub-step applied to the velocities.
+  /// The contacts' order of solving (ContactBatches), the contacts stored in it where that
+  /// pays (ContactBatches::store_in_order); each point's effective masses, target and bounce
+  /// (prepare_contacts, from the start state), then the impulses carried over from the last
+  /// sub-step applied to the velocities.
   void prepare(StepContext& c);
   /// The islands of at most Settings::direct_solve_points points, or of at most
   /// direct_solve_uneven_points of uneven masses, solved at once.
@@ -34,6 +36,9 @@ class ContactSolver {
   void solve_speculative(StepContext& c);
   /// The position passes over the resting contacts.
   void correct_positions(StepContext& c);
+  /// The contacts back in their own order (by pair of shapes), where prepare stored them in the
+  /// order of solving: the warm starts are kept, and the next step's contacts matched, in it.
+  void restore_order(StepContext& c);
 
  private:
   ContactBatches batches_;  ///< of the sub-step's contacts, found in prepare

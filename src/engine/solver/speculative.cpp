@@ -5,7 +5,8 @@
 
 namespace gp {
 
-void solve_speculative(StepContext& ctx, SpeculativeScratch& scratch) {
+void solve_speculative(StepContext& ctx, std::span<const std::uint32_t> stored_at,
+                       SpeculativeScratch& scratch) {
   ContactSet& resting = ctx.contacts;
   ContactSet& speculative = ctx.speculative_contacts;
   const BodyInertia& inertia = ctx.inertia;
@@ -24,7 +25,8 @@ void solve_speculative(StepContext& ctx, SpeculativeScratch& scratch) {
   }
   for (int level = 0; level < kReach; ++level) {
     scratch.newly.clear();
-    for (std::size_t i = 0; i < resting.size(); ++i) {
+    for (std::size_t k = 0; k < resting.size(); ++k) {
+      const std::size_t i = stored_at.empty() ? k : stored_at[k];
       const Contact& c = resting[i];
       if (scratch.included[i] || !(scratch.reached[c.body_a] || scratch.reached[c.body_b]))
         continue;

@@ -2,6 +2,8 @@
 // Impacts on bodies that rest on others, handed over to the contact solver by LocalImpacts.
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/core.hpp"
@@ -23,7 +25,10 @@ struct SpeculativeScratch {
 /// contacts of them for the velocity iterations, and bounce by C_R after; the impulses this adds
 /// act from the impact on, so they move the bodies by h × Δv, which closes each gap exactly, rather
 /// than by the resting share, which would leave a fast body overlapping and press the body under it
-/// into the ground.
-void solve_speculative(StepContext& c, SpeculativeScratch& scratch);
+/// into the ground. The resting contacts are solved in their own order (by pair of shapes);
+/// `stored_at` gives, for resting contacts stored in another, the index of each contact of their
+/// own order (else empty).
+void solve_speculative(StepContext& c, std::span<const std::uint32_t> stored_at,
+                       SpeculativeScratch& scratch);
 
 }  // namespace gp

@@ -151,7 +151,8 @@ bool solve_speculative(StepContext& c, StepMechanisms& m) {
   return true;
 }
 
-bool keep_warm_starts(StepContext& c, StepMechanisms&) {
+bool keep_warm_starts(StepContext& c, StepMechanisms& m) {
+  m.solver.restore_order(c);
   keep_impulses(c.contacts, c.warm_starts);
   return true;
 }
@@ -241,8 +242,11 @@ constexpr std::array kStages{
           hold},
     Stage{"contact solver: prepare and warm start", "GD:impulse DD:impulseV",
           kLocalPass | kSubStepPass, collides,
-          [](const StepContext&) {
-            return std::string("effective masses, targets and bounces; last impulses carried over");
+          [](const StepContext& c) {
+            return "the order of solving, in which a set of more than " +
+                   std::to_string(c.settings.stored_in_order_contacts) +
+                   " one-point contacts is stored; effective masses, targets and bounces; last "
+                   "impulses carried over";
           },
           on_contacts<&ContactSolver::prepare>},
     Stage{"contact solver: islands solved directly",
@@ -295,7 +299,9 @@ constexpr std::array kStages{
         on_contacts<&ContactSolver::correct_positions>},
     Stage{"warm starts kept", "", kLocalPass | kSubStepPass, collides,
           [](const StepContext&) {
-            return std::string("each point's impulses, for the next sub-step");
+            return std::string(
+                "contacts stored in the order of solving put back in their own; each point's "
+                "impulses, for the next sub-step");
           },
           keep_warm_starts},
     Stage{"sleep: islands at rest fall asleep", "", kLocalPass | kSubStepPass, sleeps_in_piles,
