@@ -23,6 +23,79 @@ constexpr std::size_t kColours = 64;
 constexpr std::size_t kCheckedPerTask = 2048;
 constexpr std::size_t kParallelChecks = 8192;
 
+// A movable body of an island being cut, with its place, read once: the halving then walks an
+// array rather than the bodies' places at random. A place that is not a number (a step about to
+// report it) counts as infinite, so that the order stays strict and nth_element within its range.
+struct PlacedBody {
+  Vec2 place;
+  BodyId body;
+};
+
+// Halves `bodies` `depth` times, and gives each body its part, as halving bits under `code`, in
+// `part_of`.
+void halve_bodies(std::span<PlacedBody> bodies, int depth, std::uint32_t code,
+                  std::span<std::uint32_t> part_of) {
+  if (depth == 0) {
+    for (const PlacedBody& b : bodies) part_of[b.body] = code;
+    return;
+  }
+  const std::size_t middle = bodies.size() / 2;
+  // At the median along x or y, whichever cut is shorter, so that it meets fewer contacts and
+  // the halves' bodies mix less in memory: between a pile's layers rather than through them all.
+  // A cut's length is taken through the bodies' centre: the spread, along the cut, of the bodies
+  // within a twentieth of their extent of it, which two linear passes find (ranking the bodies
+  // about each median would take selections, costly in mispredicted branches). On a tie, or a
+  // length that is not a number, along x. Ties by body id, so that the halves do not depend on
+  // the order the bodies were listed in.
+  if (bodies.size() > 1) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    Vec2 sum = Vec2::Zero();
+    Vec2 low{kInf, kInf};
+    Vec2 high{-kInf, -kInf};
+    for (const PlacedBody& b : bodies) {
+      sum += b.place;
+      low = low.cwiseMin(b.place);
+      high = high.cwiseMax(b.place);
+    }
+    const Vec2 centre = sum / static_cast<double>(bodies.size());
+    const Vec2 reach = (high - low) / 20.0;
+    // Per axis of the cut's normal: the lowest and highest place along the cut.
+    Vec2 cut_low{kInf, kInf};
+    Vec2 cut_high{-kInf, -kInf};
+    for (const PlacedBody& b : bodies) {
+      const Vec2& p = b.place;
+      for (int axis = 0; axis < 2; ++axis) {
+        if (!(std::abs(p[axis] - centre[axis]) <= reach[axis])) continue;
+        cut_low[axis] = std::min(cut_low[axis], p[1 - axis]);
+        cut_high[axis] = std::max(cut_high[axis], p[1 - axis]);
+      }
+    }
+    // No body near the centre: the cut there crosses a gap, and meets nothing.
+    const auto length = [&](int axis) {
+      return cut_high[axis] >= cut_low[axis] ? cut_high[axis] - cut_low[axis] : 0.0;
+    };
+    const int axis = length(1) < length(0) ? 1 : 0;
+    std::nth_element(bodies.begin(), bodies.begin() + static_cast<std::ptrdiff_t>(middle),
+                     bodies.end(), [axis](const PlacedBody& a, const PlacedBody& b) {
+                       const double pa = a.place[axis];
+                       const double pb = b.place[axis];
+                       return pa < pb || (pa == pb && a.body < b.body);
+                     });
+  }
+  // The halves hold different bodies: each is cut on a thread of its own, with the same result.
+  // On one thread, without handing out tasks, whose pool the heap would keep.
+  const auto lower = [&] { halve_bodies(bodies.first(middle), depth - 1, 2 * code, part_of); };
+  const auto upper = [&] {
+    halve_bodies(bodies.subspan(middle), depth - 1, 2 * code + 1, part_of);
+  };
+  if (one_thread()) {
+    lower();
+    upper();
+  } else {
+    tbb::parallel_invoke(lower, upper);
+  }
+}
+
 }  // namespace
 
 void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart> last_kept,
@@ -160,74 +233,6 @@ bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmS
   return false;
 }
 
-void ContactBatches::halve_bodies(std::span<const Vec2> positions, std::uint32_t first,
-                                  std::uint32_t last, int depth, std::uint32_t code) {
-  const auto begin = part_bodies_.begin();
-  if (depth == 0) {
-    for (auto b = begin + first; b != begin + last; ++b) body_scratch_[*b] = code;
-    return;
-  }
-  // Ties by body id, so that the halves do not depend on the order the bodies were listed in. A
-  // place that is not a number (a step about to report it) counts as infinite, so that the order
-  // stays strict and nth_element within its range.
-  const auto place = [&](BodyId b, int axis) {
-    const double p = positions[b][axis];
-    return std::isnan(p) ? std::numeric_limits<double>::infinity() : p;
-  };
-  const std::uint32_t middle = first + (last - first) / 2;
-  // At the median along x or y, whichever cut is shorter, so that it meets fewer contacts and
-  // the halves' bodies mix less in memory: between a pile's layers rather than through them all.
-  // A cut's length is taken through the bodies' centre: the spread, along the cut, of the bodies
-  // within a twentieth of their extent of it, which two linear passes find (ranking the bodies
-  // about each median would take selections, costly in mispredicted branches). On a tie, or a
-  // length that is not a number, along x.
-  if (last - first > 1) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    Vec2 sum = Vec2::Zero();
-    Vec2 low{kInf, kInf};
-    Vec2 high{-kInf, -kInf};
-    for (auto b = begin + first; b != begin + last; ++b) {
-      const Vec2 p{place(*b, 0), place(*b, 1)};
-      sum += p;
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    const Vec2 centre = sum / static_cast<double>(last - first);
-    const Vec2 reach = (high - low) / 20.0;
-    // Per axis of the cut's normal: the lowest and highest place along the cut.
-    Vec2 cut_low{kInf, kInf};
-    Vec2 cut_high{-kInf, -kInf};
-    for (auto b = begin + first; b != begin + last; ++b) {
-      const Vec2 p{place(*b, 0), place(*b, 1)};
-      for (int axis = 0; axis < 2; ++axis) {
-        if (!(std::abs(p[axis] - centre[axis]) <= reach[axis])) continue;
-        cut_low[axis] = std::min(cut_low[axis], p[1 - axis]);
-        cut_high[axis] = std::max(cut_high[axis], p[1 - axis]);
-      }
-    }
-    // No body near the centre: the cut there crosses a gap, and meets nothing.
-    const auto length = [&](int axis) {
-      return cut_high[axis] >= cut_low[axis] ? cut_high[axis] - cut_low[axis] : 0.0;
-    };
-    const int axis = length(1) < length(0) ? 1 : 0;
-    std::nth_element(begin + first, begin + middle, begin + last, [&](BodyId a, BodyId b) {
-      const double pa = place(a, axis);
-      const double pb = place(b, axis);
-      return pa < pb || (pa == pb && a < b);
-    });
-  }
-  // The halves hold different bodies: each is cut on a thread of its own, with the same result.
-  // On one thread, without handing out tasks, whose pool the heap would keep.
-  const auto lower = [&] { halve_bodies(positions, first, middle, depth - 1, 2 * code); };
-  const auto upper = [&] { halve_bodies(positions, middle, last, depth - 1, 2 * code + 1); };
-  if (one_thread()) {
-    lower();
-    upper();
-  } else {
-    tbb::parallel_invoke(lower, upper);
-  }
-}
-
 void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia,
                           std::span<const Vec2> positions, std::size_t parted_above) {
   const auto close_stage = [this] {
@@ -241,22 +246,30 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
   body_scratch_.assign(inertia.inverse_mass.size(), kUnlisted);
   contact_scratch_.resize(contacts.size());
   std::size_t groups = 0;
+  // Freed when done: held from step to step, it would hold 24 B a body.
+  std::vector<PlacedBody> placed;
+  const auto place_of = [&](BodyId b) {
+    const auto finite = [](double x) {
+      return std::isnan(x) ? std::numeric_limits<double>::infinity() : x;
+    };
+    return Vec2{finite(positions[b].x()), finite(positions[b].y())};
+  };
   for (PartedIsland& island : parted_) {
     const std::uint32_t start = islands_.island_start[island.root];
     const std::uint32_t end = islands_.island_end[island.root];
-    part_bodies_.clear();
+    placed.clear();
     for (std::uint32_t e = start; e < end; ++e) {
       const Contact& c = contacts[islands_.order[e]];
       for (const BodyId b : {c.body_a, c.body_b}) {
         if (movable(inertia, b) && body_scratch_[b] == kUnlisted) {
           body_scratch_[b] = 0;
-          part_bodies_.push_back(b);
+          placed.push_back({place_of(b), b});
         }
       }
     }
     int depth = 1;
     while (depth < kMaxPartDepth && ((end - start) >> depth) > parted_above) ++depth;
-    halve_bodies(positions, 0, static_cast<std::uint32_t>(part_bodies_.size()), depth, 0);
+    halve_bodies(placed, depth, 0, body_scratch_);
     island.depth = depth;
     island.first_group = groups;
     groups += std::size_t{2} << depth;

@@ -242,8 +242,6 @@ class ContactBatches {
   /// Of a build whose contacts are to be stored in order: finds stored_at_ from order_, and makes
   /// order_ and the islands' contact indices those of the contacts once stored in order.
   void index_in_storage_order();
-  void halve_bodies(std::span<const Vec2> positions, std::uint32_t first, std::uint32_t last,
-                    int depth, std::uint32_t code);
 
   ContactIslands islands_;
   // Of the last build: its contacts, and per body whether it was movable (which sleeping and
@@ -257,7 +255,6 @@ class ContactBatches {
   std::size_t first_colour_stage_ = 0;
   std::vector<char> shared_stage_;  // per stage: 1 where its tasks go to the threads
   std::vector<PartedIsland> parted_;
-  std::vector<BodyId> part_bodies_;  // the movable bodies of the island being cut
   // Scratch of the build, per body: while parting, the part a body fell into, as halving bits;
   // while levelling, the level of its last contact. Per contact: while parting, the group of a
   // contact of a cut island; then a part's contacts, while they are placed.
