@@ -44,6 +44,9 @@ struct SimulateOptions {
   /// the same result to the bit on any number. One by default: verification runs many
   /// simulations side by side, and a run's time should not depend on the machine's cores.
   int threads = 1;
+  /// The step's SIMD paths take at most this many doubles at a time (1, 2 or 4), with the same
+  /// result to the bit on any; none: the widest the CPU has.
+  std::optional<int> lanes;
 };
 
 /// `gamephysics simulate`: runs a scene file and writes its trajectory as CSV; with `explain`,

@@ -50,6 +50,9 @@ int main(int argc, char** argv) {
                      "--out, then the wall time of each stage)");
   simulate->add_option("--threads", simulation.threads,
                        "Threads of a step (default: 1; 0: every core); the output is the same");
+  simulate->add_option("--lanes", simulation.lanes,
+                       "Doubles the step's SIMD paths take at a time: 1, 2 (SSE2) or 4 (AVX2) "
+                       "(default: the widest the CPU has); the output is the same");
 
   gp::cli::OracleCommandOptions oracle_run;
   auto* oracle = app.add_subcommand(

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/lane_limit.hpp"
 #include "cli/partial_file.hpp"
 #include "cli/thread_limit.hpp"
 #include "engine/output/output_times.hpp"
@@ -75,6 +76,7 @@ int simulate(const SimulateOptions& options) {
   std::optional<tbb::global_control> threads;
   try {
     limit_threads(threads, options.threads);
+    limit_lanes(options.lanes);
     scene = load_scene(options.scene, options.overrides);
     space = build_space(scene);
     if (options.explain) explain(file, scene, *space);

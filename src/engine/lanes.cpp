@@ -1,5 +1,7 @@
 #include "engine/lanes.hpp"
 
+#include <algorithm>
+
 namespace gp {
 
 namespace {
@@ -16,13 +18,17 @@ Lanes widest_on_this_cpu() {
 #endif
 }
 
-// Asked once: the SIMD paths read it at every call.
-const Lanes widest = widest_on_this_cpu();
+// Asked once, and narrowed only by limit_lanes: the SIMD paths read it at every call.
+Lanes widest = widest_on_this_cpu();
 
 }  // namespace
 
 Lanes widest_lanes() {
   return widest;
+}
+
+void limit_lanes(Lanes most) {
+  widest = std::min(widest, most);
 }
 
 }  // namespace gp

@@ -18,6 +18,11 @@ enum class Lanes { kOne, kTwo, kFour };
 /// the same bits.
 Lanes widest_lanes();
 
+/// Narrows the SIMD paths to at most `most` lanes from now on; the CPU's widest still bounds them.
+/// Every width gives the same bits, which a run on fewer lanes shows. Call it before a run, not
+/// during one.
+void limit_lanes(Lanes most);
+
 /// Whether the four-lane (AVX2) paths run: widest_lanes() is kFour.
 inline bool four_lanes() {
   return widest_lanes() == Lanes::kFour;
