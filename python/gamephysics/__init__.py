@@ -13,8 +13,8 @@ from typing import NamedTuple, Optional, Union
 import numpy as np
 
 from ._core import (BodyDef, BodyState, BodyType, InputError, Integrator, NumericalError, Scene,
-                    Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run, load_scene, models,
-                    set_threads, threads)
+                    Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run, lanes, load_scene,
+                    models, set_lanes, set_threads, threads)
 
 # So that `from gamephysics.models import dd` works: the submodules are made by the compiled part.
 sys.modules[__name__ + ".models"] = models
@@ -23,7 +23,8 @@ for _name in ("tm", "gd", "dd", "im"):
 
 __all__ = ["BodyDef", "BodyState", "BodyTrajectory", "BodyType", "InputError", "Integrator",
            "NumericalError", "Scene", "Settings", "Shape", "ShapeDef", "Space", "Trajectory",
-           "Wrench", "load_scene", "models", "oracle", "set_threads", "simulate", "threads"]
+           "Wrench", "lanes", "load_scene", "models", "oracle", "set_lanes", "set_threads",
+           "simulate", "threads"]
 
 
 class BodyTrajectory(NamedTuple):

@@ -16,6 +16,8 @@ void bind_scenes(pybind11::module_& m);
 void bind_models(pybind11::module_& m);
 /// set_threads and threads (threads.cpp).
 void bind_threads(pybind11::module_& m);
+/// set_lanes and lanes (lanes.cpp).
+void bind_lanes(pybind11::module_& m);
 
 /// The task arena of as many threads as set_threads asked for (threads.cpp).
 tbb::task_arena& engine_arena();

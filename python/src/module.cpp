@@ -13,4 +13,5 @@ PYBIND11_MODULE(_core, m) {
   gp::python::bind_scenes(m);
   gp::python::bind_models(m);
   gp::python::bind_threads(m);
+  gp::python::bind_lanes(m);
 }

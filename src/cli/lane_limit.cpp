@@ -9,19 +9,9 @@ namespace gp::cli {
 
 void limit_lanes(std::optional<int> lanes) {
   if (!lanes) return;
-  switch (*lanes) {
-    case 1:
-      gp::limit_lanes(Lanes::kOne);
-      return;
-    case 2:
-      gp::limit_lanes(Lanes::kTwo);
-      return;
-    case 4:
-      gp::limit_lanes(Lanes::kFour);
-      return;
-    default:
-      throw InputError("--lanes", "must be 1, 2 or 4", std::to_string(*lanes));
-  }
+  const std::optional<Lanes> most = lanes_of(*lanes);
+  if (!most) throw InputError("--lanes", "must be 1, 2 or 4", std::to_string(*lanes));
+  gp::limit_lanes(*most);
 }
 
 }  // namespace gp::cli

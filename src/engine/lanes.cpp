@@ -18,8 +18,9 @@ Lanes widest_on_this_cpu() {
 #endif
 }
 
-// Asked once, and narrowed only by limit_lanes: the SIMD paths read it at every call.
-Lanes widest = widest_on_this_cpu();
+// The CPU's, asked once; and the widest the SIMD paths may take, which they read at every call.
+const Lanes cpu_widest = widest_on_this_cpu();
+Lanes widest = cpu_widest;
 
 }  // namespace
 
@@ -28,7 +29,32 @@ Lanes widest_lanes() {
 }
 
 void limit_lanes(Lanes most) {
-  widest = std::min(widest, most);
+  widest = std::min(cpu_widest, most);
+}
+
+std::optional<Lanes> lanes_of(int doubles) {
+  switch (doubles) {
+    case 1:
+      return Lanes::kOne;
+    case 2:
+      return Lanes::kTwo;
+    case 4:
+      return Lanes::kFour;
+    default:
+      return std::nullopt;
+  }
+}
+
+int doubles_of(Lanes lanes) {
+  switch (lanes) {
+    case Lanes::kOne:
+      break;
+    case Lanes::kTwo:
+      return 2;
+    case Lanes::kFour:
+      return 4;
+  }
+  return 1;
 }
 
 }  // namespace gp
