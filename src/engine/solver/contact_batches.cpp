@@ -31,6 +31,13 @@ struct PlacedBody {
   BodyId body;
 };
 
+PlacedBody placed_body(std::span<const Vec2> positions, BodyId b) {
+  const auto finite = [](double x) {
+    return std::isnan(x) ? std::numeric_limits<double>::infinity() : x;
+  };
+  return {{finite(positions[b].x()), finite(positions[b].y())}, b};
+}
+
 // Halves `bodies` `depth` times, and gives each body its part, as halving bits under `code`, in
 // `part_of`.
 void halve_bodies(std::span<PlacedBody> bodies, int depth, std::uint32_t code,
@@ -248,12 +255,6 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
   std::size_t groups = 0;
   // Freed when done: held from step to step, it would hold 24 B a body.
   std::vector<PlacedBody> placed;
-  const auto place_of = [&](BodyId b) {
-    const auto finite = [](double x) {
-      return std::isnan(x) ? std::numeric_limits<double>::infinity() : x;
-    };
-    return Vec2{finite(positions[b].x()), finite(positions[b].y())};
-  };
   for (PartedIsland& island : parted_) {
     const std::uint32_t start = islands_.island_start[island.root];
     const std::uint32_t end = islands_.island_end[island.root];
@@ -263,7 +264,7 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
       for (const BodyId b : {c.body_a, c.body_b}) {
         if (movable(inertia, b) && body_scratch_[b] == kUnlisted) {
           body_scratch_[b] = 0;
-          placed.push_back({place_of(b), b});
+          placed.push_back(placed_body(positions, b));
         }
       }
     }
