@@ -38,6 +38,7 @@ class Settings:
     time_to_sleep: float
     coloured_island_contacts: int
     island_part_contacts: int
+    island_parts: int
     def __init__(self, gravity: Vector = ..., G: Optional[float] = ...,
                  integrator: Integrator = ...) -> None: ...
 

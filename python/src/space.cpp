@@ -52,7 +52,9 @@ void bind_settings(py::module_& m) {
       .def_readwrite("coloured_island_contacts", &Settings::coloured_island_contacts,
                      "islands of more contacts are solved colour by colour (0: never)")
       .def_readwrite("island_part_contacts", &Settings::island_part_contacts,
-                     "islands of more contacts are cut into parts that threads share (0: never)");
+                     "islands of more contacts are cut into parts that threads share (0: never)")
+      .def_readwrite("island_parts", &Settings::island_parts,
+                     "into how many parts such an island is cut (a power of two, 2 to 64)");
 }
 
 void bind_shapes(py::module_& m) {

@@ -74,6 +74,7 @@ Settings read_settings(const JsonObject& root) {
   read_setting(root, "time_to_sleep", settings.time_to_sleep);
   read_setting(root, "coloured_island_contacts", settings.coloured_island_contacts);
   read_setting(root, "island_part_contacts", settings.island_part_contacts);
+  read_setting(root, "island_parts", settings.island_parts);
   validate_settings(settings);
   return settings;
 }
@@ -148,6 +149,7 @@ Scene parse_scene(const std::string& text, const SceneOverrides& overrides) {
                    "time_to_sleep",
                    "coloured_island_contacts",
                    "island_part_contacts",
+                   "island_parts",
                    "bodies"});
   root.get_optional<std::string>("description");  // for the reader of the file: type only
   Scene scene;

@@ -70,11 +70,15 @@ struct Settings {
   /// Off by default: in the colours' order a 100-row pyramid sways 1.4 m sideways in 500 steps,
   /// against 0.29 m in the contacts' own order. The same on any number of threads either way.
   int coloured_island_contacts = 0;
-  /// Islands of more than this many contacts are cut into parts of about this many, by halving
-  /// them where the cut is shorter, so that threads share them: the parts are solved side by
-  /// side, each in the contacts' order, then the contacts between them. 0: never. The same on any
+  /// Islands of more than this many contacts are cut into island_parts parts, by halving them
+  /// where the cut is shorter, so that threads share them: the parts are solved side by side,
+  /// each in the contacts' order, then the contacts between them. 0: never. The same on any
   /// number of threads either way.
   int island_part_contacts = 4096;
+  /// Into how many parts such an island is cut: a power of two from 2 to 64. Two, one per core of
+  /// the machines the bench runs on: each further halving costs the preparation a pass over the
+  /// island and makes the parts' levels shorter (rain16000 on one thread: 16 parts, 11% slower).
+  int island_parts = 2;
   /// Sets of one-point contacts of more than this many are stored, for the solver's stages, in
   /// the order the passes solve them (ContactBatches::store_in_order), with the same result to
   /// the bit. Not read from scenes: it changes speed alone. Smaller sets, with their bodies

@@ -1,5 +1,6 @@
 #include "scene/validation.hpp"
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -134,6 +135,11 @@ void validate_settings(const Settings& settings) {
   if (settings.island_part_contacts < 0) {
     throw InputError("island_part_contacts", "must be >= 0 (0: never)",
                      number_text(settings.island_part_contacts));
+  }
+  if (settings.island_parts < 2 || settings.island_parts > 64 ||
+      !std::has_single_bit(static_cast<unsigned>(settings.island_parts))) {
+    throw InputError("island_parts", "must be a power of two from 2 to 64",
+                     number_text(settings.island_parts));
   }
 }
 

@@ -56,6 +56,8 @@ std::vector<std::uint32_t> in_order(std::size_t n) {
 
 // Islands of more contacts than this are coloured in these tests.
 constexpr std::size_t kColouredAbove = 4096;
+// Islands of more than 3 contacts cut into four parts.
+constexpr gp::IslandSplitting kFourParts{.parted_above = 3, .parts = 4};
 
 using Visit = gp::ContactBatches::Visit;
 
@@ -274,12 +276,15 @@ TEST_CASE("A stage with little beside its largest island stays on the calling th
 }
 
 TEST_CASE("A large island is visited part by part, then the contacts between parts") {
-  // The chain of 8 bodies at x = 1..8, and its 8 contacts, parted above 3 contacts: halved twice
-  // (8 / 2 > 3, 8 / 4 <= 3) into the parts {1, 2}, {3, 4}, {5, 6}, {7, 8}. Contacts 0 (ground
-  // - 1) and 1 (1 - 2) are inside part 0, 3 inside part 1, 5 inside part 2, 7 inside part 3;
-  // 2 (2 - 3) joins parts 0 and 1, 6 (6 - 7) parts 2 and 3, and 4 (4 - 5) the two halves.
+  // The chain of 8 bodies at x = 1..8, and its 8 contacts, parted above 3 contacts. In two parts,
+  // {1..4} and {5..8}: contacts 0 (ground - 1) to 3 (3 - 4) inside the first, 5 to 7 inside the
+  // second, and 4 (4 - 5) between them.
   const Graph g = chain(8);
-  CHECK(visits(g, {3, 0}) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
+  CHECK(visits(g, {3, 0}) == std::vector<std::uint32_t>{0, 1, 2, 3, 5, 6, 7, 4});
+  // In four, {1, 2}, {3, 4}, {5, 6}, {7, 8}: contacts 0 and 1 (1 - 2) inside part 0, 3 inside
+  // part 1, 5 inside part 2, 7 inside part 3; 2 (2 - 3) joins parts 0 and 1, 6 (6 - 7) parts 2
+  // and 3, and 4 the two halves.
+  CHECK(visits(g, kFourParts) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
   // Under the threshold, or with parting off, the contacts' own order.
   CHECK(visits(g, {8, 0}) == in_order(8));
   CHECK(visits(g, {0, 0}) == in_order(8));
@@ -294,7 +299,7 @@ TEST_CASE("A chain is halved across its length, whatever order its bodies come i
   for (std::size_t b = 0; b < 9; ++b) g.positions[b] = {0.0, 9.0 - static_cast<double>(b)};
   // Bodies 8, 7 are at the bottom: parts {8, 7}, {6, 5}, {4, 3}, {2, 1}, contact k joining
   // bodies 9 - k and 8 - k.
-  CHECK(visits(g, {3, 0}) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
+  CHECK(visits(g, kFourParts) == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
 }
 
 TEST_CASE("A pyramid is cut between its layers, not through them") {
@@ -362,7 +367,7 @@ TEST_CASE("In stretches, the contacts come in the order of the visit one at a ti
   const Graph row(4, {{1, 0}, {2, 0}, {3, 0}, {1, 2}, {2, 3}});
   CHECK(stretches_of(row, {0, kColouredAbove}).contacts == visits(row));
   const Graph parted = chain(8);
-  const Stretches parts = stretches_of(parted, {3, 0});
+  const Stretches parts = stretches_of(parted, kFourParts);
   CHECK(parts.contacts == std::vector<std::uint32_t>{0, 1, 3, 5, 7, 2, 6, 4});
   // The parts, then the contacts between them: two stages, two stretches on one thread.
   CHECK(parts.count == 2);
@@ -383,7 +388,7 @@ TEST_CASE(
     "A body whose place is not a number leaves every contact of a parted island visited once") {
   Graph g = chain(8);
   g.positions[3].x() = std::numeric_limits<double>::quiet_NaN();
-  std::vector<std::uint32_t> order = visits(g, {3, 0});
+  std::vector<std::uint32_t> order = visits(g, kFourParts);
   std::sort(order.begin(), order.end());
   CHECK(order == in_order(8));
 }
@@ -400,12 +405,13 @@ TEST_CASE("The contacts of the last pass keep their parts though the bodies move
   // the last two to the front, so that parts found afresh would be {7, 8}, {1, 2}, {3, 4}, {5, 6}.
   Graph g = chain(8);
   gp::ContactBatches batches;
-  const std::vector<std::uint32_t> before = visits(batches, g, {3, 0});
+  const std::vector<std::uint32_t> before = visits(batches, g, kFourParts);
   for (std::size_t b = 1; b < 9; ++b) g.positions[b].x() = static_cast<double>((b + 1) % 8);
-  REQUIRE(visits(g, {3, 0}) != before);
-  CHECK(visits(batches, g, {3, 0}, kept(g)) == before);
-  // Unless the points kept are not theirs.
-  CHECK(visits(batches, g, {3, 0}) == visits(g, {3, 0}));
+  REQUIRE(visits(g, kFourParts) != before);
+  CHECK(visits(batches, g, kFourParts, kept(g)) == before);
+  // Unless the points kept are not theirs, or they were parted in another number of parts.
+  CHECK(visits(batches, g, kFourParts) == visits(g, kFourParts));
+  CHECK(visits(batches, g, {3, 0}, kept(g)) == visits(g, {3, 0}));
 }
 
 TEST_CASE("Other contacts than the last pass's are grouped afresh") {

@@ -24,12 +24,13 @@ namespace test_stored_order {
 
 constexpr int kSteps = 600;
 
-// rain1000 with its pile cut into parts of `part_contacts` (0: never cut, as its ~2500 contacts
-// are not by the default 4096).
+// rain1000 with its pile cut into 8 parts when it holds more than `part_contacts` contacts (0:
+// never cut, as its ~2500 contacts are not by the default 4096).
 std::unique_ptr<gp::Space> rain(bool sleep, int part_contacts, int stored_in_order_contacts) {
   gp::Scene scene = gp::load_scene(GP_SOURCE_DIR "/scenes/rain1000.json");
   scene.settings.sleep = sleep;
   scene.settings.island_part_contacts = part_contacts;
+  scene.settings.island_parts = 8;
   scene.settings.stored_in_order_contacts = stored_in_order_contacts;
   return gp::build_space(scene);
 }

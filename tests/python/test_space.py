@@ -79,3 +79,13 @@ def test_changes_are_checked_like_the_scene_file():
         space.apply_impulse("wall", (1.0, 0.0))
     with pytest.raises(gp.InputError, match=r'^body: must name a body of the space, got "nobody"$'):
         space.state("nobody")
+
+
+def test_settings_are_checked_like_the_scene_file():
+    settings = gp.Settings()
+    assert settings.island_parts == 2
+    settings.island_parts = 3
+    with pytest.raises(gp.InputError, match=r"^island_parts: must be a power of two from 2 to 64, got 3$"):
+        gp.Space(settings)
+    settings.island_parts = 8
+    assert gp.Space(settings).body_count == 0

@@ -115,7 +115,7 @@ TEST_CASE("Unknown fields are rejected at every level", "[FR:Verify-Physical_Con
               "direct_solve_uneven_points, direct_solve_mass_ratio, direct_solve_resting_points, "
               "position_iterations, restitution_threshold, sleep, sleep_speed, "
               "sleep_angular_speed, time_to_sleep, coloured_island_contacts, island_part_contacts, "
-              "bodies)",
+              "island_parts, bodies)",
               "[0,-9.81]");
   check_error(scene_with(R"({"name": "b", "position": [0, 0], "mas": 1})"), "bodies[0].mas",
               "is not a known field (known: name, type, position, angle, velocity, "
@@ -230,6 +230,11 @@ TEST_CASE("Settings are checked", "[FR:Verify-Physical_Constraints]") {
               "coloured_island_contacts", "must be >= 0 (0: never)", "-1");
   check_error(R"({"island_part_contacts": -2, "dt": 0.01, "duration": 1, "bodies": []})",
               "island_part_contacts", "must be >= 0 (0: never)", "-2");
+  for (const char* parts : {"1", "3", "128"}) {
+    check_error(std::string(R"({"island_parts": )") + parts +
+                    R"(, "dt": 0.01, "duration": 1, "bodies": []})",
+                "island_parts", "must be a power of two from 2 to 64", parts);
+  }
   // The direct solve's settings: setting, rule, value.
   const std::string direct_solve[][3] = {
       {"direct_solve_points", "must be in [0, 1024]", "2000"},

@@ -145,7 +145,7 @@ void ContactBatches::build(const ContactSet& contacts, std::span<const WarmStart
       place_task(contacts, {islands_.order.data() + start, end - start});
     }
   }
-  part(contacts, inertia, positions, splitting.parted_above);
+  part(contacts, inertia, positions, splitting.parts);
   first_colour_stage_ = stage_end_.size();
   // The parts' tasks, placed from a copy of their contacts (part leaves room for all of them).
   if (levels_of_.size() < task_end_.size()) start_levelling();
@@ -208,6 +208,7 @@ bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmS
               movable_.size() == bodies &&
               built_splitting_.parted_above == splitting.parted_above &&
               built_splitting_.coloured_above == splitting.coloured_above &&
+              built_splitting_.parts == splitting.parts &&
               built_splitting_.stored_in_order_above == splitting.stored_in_order_above;
   // Pairs are unique and the points kept in the contacts' order: each contact's points finding
   // its own pair where they were kept makes the two lists of contacts the same.
@@ -241,7 +242,7 @@ bool ContactBatches::holds_for(const ContactSet& contacts, std::span<const WarmS
 }
 
 void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia,
-                          std::span<const Vec2> positions, std::size_t parted_above) {
+                          std::span<const Vec2> positions, std::size_t parts) {
   const auto close_stage = [this] {
     stage_end_.push_back(static_cast<std::uint32_t>(task_end_.size()));
   };
@@ -268,8 +269,7 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
         }
       }
     }
-    int depth = 1;
-    while (depth < kMaxPartDepth && ((end - start) >> depth) > parted_above) ++depth;
+    const int depth = std::clamp(static_cast<int>(std::bit_width(parts)) - 1, 1, kMaxPartDepth);
     halve_bodies(placed, depth, 0, body_scratch_);
     island.depth = depth;
     island.first_group = groups;

@@ -48,6 +48,8 @@ struct IslandSplitting {
   std::size_t coloured_above = 0;  ///< Settings::coloured_island_contacts, before parting
   /// Settings::stored_in_order_contacts; by default none.
   std::size_t stored_in_order_above = std::numeric_limits<std::size_t>::max();
+  /// Settings::island_parts: a power of two, from 2 to 2^ContactBatches::kMaxPartDepth.
+  std::size_t parts = 2;
 };
 
 class ContactBatches {
@@ -58,14 +60,14 @@ class ContactBatches {
   /// a stage costs the threads a meeting of some microseconds, what a thread takes to solve about
   /// this many contacts, and an island's contacts solved on the other core leave its caches.
   static constexpr std::size_t kSharedStageContacts = 2048;
-  /// The most halvings of an island: 64 parts.
+  /// The most halvings of an island: 64 parts (Settings::island_parts).
   static constexpr int kMaxPartDepth = 6;
 
   /// Groups `contacts`, whose bodies are at `positions` [m, by body id], into stages of tasks.
   /// First stage: each island not cut, and each part of the cut ones. An island to part is halved
   /// at the median of its bodies' places along x or y, whichever cut is shorter (the spread along
   /// it, through their centre, of the bodies within a twentieth of their extent of it), and each
-  /// half again, until the parts have at most about `splitting.parted_above` contacts; a contact
+  /// half again, until there are `splitting.parts` parts; a contact
   /// between two parts joins the smallest group of parts holding both. Second stage: per cut
   /// island, one task of its contacts between parts, group by group from the smallest up. Last
   /// stages: each colour of the coloured islands, one task per contact. No two tasks of a stage
@@ -231,7 +233,7 @@ class ContactBatches {
   bool holds_for(const ContactSet& contacts, std::span<const WarmStart> last_kept,
                  const BodyInertia& inertia, const IslandSplitting& splitting);
   void part(const ContactSet& contacts, const BodyInertia& inertia, std::span<const Vec2> positions,
-            std::size_t parted_above);
+            std::size_t parts);
   void colour(const ContactSet& contacts, const BodyInertia& inertia, std::size_t coloured_above);
   /// Which stages go to the threads (kSharedStageContacts), into shared_stage_.
   void choose_shared_stages();

@@ -17,7 +17,8 @@ void ContactSolver::prepare(StepContext& c) {
   batches_.build(c.contacts, c.warm_starts, c.inertia, c.start.position,
                  {static_cast<std::size_t>(c.settings.island_part_contacts),
                   static_cast<std::size_t>(c.settings.coloured_island_contacts),
-                  static_cast<std::size_t>(c.settings.stored_in_order_contacts)});
+                  static_cast<std::size_t>(c.settings.stored_in_order_contacts),
+                  static_cast<std::size_t>(c.settings.island_parts)});
   batches_.store_in_order(c.contacts);
   before_impulses_.take(c.state);
   prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
