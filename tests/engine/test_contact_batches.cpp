@@ -290,6 +290,20 @@ TEST_CASE("A large island is visited part by part, then the contacts between par
   CHECK(visits(g, {0, 0}) == in_order(8));
 }
 
+TEST_CASE("Two large islands are each cut in two, their parts side by side") {
+  // Chains 1..8 (contacts 0..7) and 9..16 (contacts 8..15), each resting on the ground: each is
+  // halved as the chain above, its parts' contacts first, island after island, then the contact
+  // between each island's halves.
+  std::vector<std::pair<gp::BodyId, gp::BodyId>> links;
+  for (const gp::BodyId first : {1U, 9U}) {
+    links.emplace_back(first, 0);
+    for (gp::BodyId b = first; b < first + 7; ++b) links.emplace_back(b, b + 1);
+  }
+  const Graph g(17, links);
+  CHECK(visits(g, {3, 0}) ==
+        std::vector<std::uint32_t>{0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 11, 13, 14, 15, 4, 12});
+}
+
 TEST_CASE("A chain is halved across its length, whatever order its bodies come in") {
   // The same chain standing upright (body b at (0, b)) and listed from the top: the same parts,
   // found by height, and the same order as along x.

@@ -250,27 +250,41 @@ void ContactBatches::part(const ContactSet& contacts, const BodyInertia& inertia
     close_stage();
     return;
   }
-  constexpr std::uint32_t kUnlisted = ~std::uint32_t{0};
-  body_scratch_.assign(inertia.inverse_mass.size(), kUnlisted);
+  const std::size_t bodies = inertia.inverse_mass.size();
+  body_scratch_.resize(bodies);
   contact_scratch_.resize(contacts.size());
+  // The islands' movable bodies, island after island, each in the order of their ids: found in a
+  // pass over the bodies, whose island is their root, where an island's contacts would list them
+  // in a walk over the bodies at random. Freed when done: held from step to step, it would hold
+  // 24 B a body.
+  constexpr std::uint32_t kNotParted = ~std::uint32_t{0};
+  const auto island_of = [this](BodyId root) {
+    const auto found = std::ranges::lower_bound(parted_, root, {}, &PartedIsland::root);
+    return found != parted_.end() && found->root == root
+               ? static_cast<std::uint32_t>(found - parted_.begin())
+               : kNotParted;
+  };
+  std::vector<std::uint32_t> placed_end(parted_.size() + 1, 0);
+  for (BodyId b = 0; b < bodies; ++b) {
+    const std::uint32_t k = movable(inertia, b) ? island_of(islands_.parent[b]) : kNotParted;
+    body_scratch_[b] = k;
+    if (k != kNotParted) ++placed_end[k + 1];
+  }
+  std::partial_sum(placed_end.begin(), placed_end.end(), placed_end.begin());
+  std::vector<PlacedBody> placed(placed_end.back());
+  std::vector<std::uint32_t> next(placed_end.begin(), placed_end.end() - 1);
+  for (BodyId b = 0; b < bodies; ++b) {
+    if (body_scratch_[b] != kNotParted)
+      placed[next[body_scratch_[b]]++] = placed_body(positions, b);
+  }
+  const int depth = std::clamp(static_cast<int>(std::bit_width(parts)) - 1, 1, kMaxPartDepth);
   std::size_t groups = 0;
-  // Freed when done: held from step to step, it would hold 24 B a body.
-  std::vector<PlacedBody> placed;
-  for (PartedIsland& island : parted_) {
+  for (std::size_t k = 0; k < parted_.size(); ++k) {
+    PartedIsland& island = parted_[k];
     const std::uint32_t start = islands_.island_start[island.root];
     const std::uint32_t end = islands_.island_end[island.root];
-    placed.clear();
-    for (std::uint32_t e = start; e < end; ++e) {
-      const Contact& c = contacts[islands_.order[e]];
-      for (const BodyId b : {c.body_a, c.body_b}) {
-        if (movable(inertia, b) && body_scratch_[b] == kUnlisted) {
-          body_scratch_[b] = 0;
-          placed.push_back(placed_body(positions, b));
-        }
-      }
-    }
-    const int depth = std::clamp(static_cast<int>(std::bit_width(parts)) - 1, 1, kMaxPartDepth);
-    halve_bodies(placed, depth, 0, body_scratch_);
+    halve_bodies(std::span(placed).subspan(placed_end[k], placed_end[k + 1] - placed_end[k]), depth,
+                 0, body_scratch_);
     island.depth = depth;
     island.first_group = groups;
     groups += std::size_t{2} << depth;
