@@ -75,9 +75,12 @@ struct Settings {
   /// each in the contacts' order, then the contacts between them. 0: never. The same on any
   /// number of threads either way.
   int island_part_contacts = 4096;
-  /// Into how many parts such an island is cut: a power of two from 2 to 64. Two, one per core of
-  /// the machines the bench runs on: each further halving costs the preparation a pass over the
-  /// island and makes the parts' levels shorter (rain16000 on one thread: 16 parts, 11% slower).
+  /// The most parts island_parts may ask for: six halvings.
+  static constexpr int kMaxIslandParts = 64;
+  /// Into how many parts such an island is cut: a power of two from 2 to kMaxIslandParts. Two, one
+  /// per core of the machines the bench runs on: each further halving costs the preparation a pass
+  /// over the island and makes the parts' levels shorter (rain16000 on one thread: 16 parts, 11%
+  /// slower).
   int island_parts = 2;
   /// Sets of one-point contacts of more than this many are stored, for the solver's stages, in
   /// the order the passes solve them (ContactBatches::store_in_order), with the same result to

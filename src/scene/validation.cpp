@@ -136,10 +136,12 @@ void validate_settings(const Settings& settings) {
     throw InputError("island_part_contacts", "must be >= 0 (0: never)",
                      number_text(settings.island_part_contacts));
   }
-  if (settings.island_parts < 2 || settings.island_parts > 64 ||
+  if (settings.island_parts < 2 || settings.island_parts > Settings::kMaxIslandParts ||
       !std::has_single_bit(static_cast<unsigned>(settings.island_parts))) {
-    throw InputError("island_parts", "must be a power of two from 2 to 64",
-                     number_text(settings.island_parts));
+    throw InputError(
+        "island_parts",
+        "must be a power of two from 2 to " + std::to_string(Settings::kMaxIslandParts),
+        number_text(settings.island_parts));
   }
 }
 

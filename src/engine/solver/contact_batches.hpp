@@ -10,6 +10,7 @@
 // result to the bit on any number of them.
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -19,6 +20,7 @@
 #include "engine/solver/contact_islands.hpp"
 #include "engine/solver/warm_start.hpp"
 #include "engine/threads.hpp"
+#include "scene/settings.hpp"
 
 namespace gp {
 
@@ -60,8 +62,9 @@ class ContactBatches {
   /// a stage costs the threads a meeting of some microseconds, what a thread takes to solve about
   /// this many contacts, and an island's contacts solved on the other core leave its caches.
   static constexpr std::size_t kSharedStageContacts = 2048;
-  /// The most halvings of an island: 64 parts (Settings::island_parts).
-  static constexpr int kMaxPartDepth = 6;
+  /// The most halvings of an island: into Settings::kMaxIslandParts parts.
+  static constexpr int kMaxPartDepth =
+      std::countr_zero(static_cast<unsigned>(Settings::kMaxIslandParts));
 
   /// Groups `contacts`, whose bodies are at `positions` [m, by body id], into stages of tasks.
   /// First stage: each island not cut, and each part of the cut ones. An island to part is halved
