@@ -12,19 +12,19 @@ from typing import NamedTuple, Optional, Union
 
 import numpy as np
 
-from ._core import (BodyDef, BodyState, BodyType, InputError, Integrator, NumericalError, Scene,
-                    Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run, lanes, load_scene,
-                    models, set_lanes, set_threads, threads)
+from ._core import (BodyDef, BodyState, BodyType, ContactPoint, Impact, InputError, Integrator,
+                    NumericalError, Scene, Settings, Shape, ShapeDef, Space, Wrench, _oracle, _run,
+                    lanes, load_scene, models, set_lanes, set_threads, threads)
 
 # So that `from gamephysics.models import dd` works: the submodules are made by the compiled part.
 sys.modules[__name__ + ".models"] = models
 for _name in ("tm", "gd", "dd", "im"):
     sys.modules[f"{__name__}.models.{_name}"] = getattr(models, _name)
 
-__all__ = ["BodyDef", "BodyState", "BodyTrajectory", "BodyType", "InputError", "Integrator",
-           "NumericalError", "Scene", "Settings", "Shape", "ShapeDef", "Space", "Trajectory",
-           "Wrench", "lanes", "load_scene", "models", "oracle", "set_lanes", "set_threads",
-           "simulate", "threads"]
+__all__ = ["BodyDef", "BodyState", "BodyTrajectory", "BodyType", "ContactPoint", "Impact",
+           "InputError", "Integrator", "NumericalError", "Scene", "Settings", "Shape", "ShapeDef",
+           "Space", "Trajectory", "Wrench", "lanes", "load_scene", "models", "oracle", "set_lanes",
+           "set_threads", "simulate", "threads"]
 
 
 class BodyTrajectory(NamedTuple):

@@ -90,6 +90,22 @@ class Wrench:
     torque: float
     def __init__(self, force: Vector = ..., torque: float = ...) -> None: ...
 
+class Impact:
+    time: float
+    body_a: int
+    body_b: int
+    normal: numpy.ndarray
+    point: numpy.ndarray
+    impulse: float
+
+class ContactPoint:
+    body_a: int
+    body_b: int
+    point: numpy.ndarray
+    normal: numpy.ndarray
+    normal_impulse: float
+    tangent_impulse: float
+
 class Space:
     time: float
     body_count: int
@@ -109,6 +125,8 @@ class Space:
     def apply_force(self, body: Body, force: Vector, point: Optional[Vector] = ...) -> None: ...
     def remove_body(self, body: Body) -> None: ...
     def removed(self, body: int) -> bool: ...
+    def impacts(self) -> list[Impact]: ...
+    def contact_points(self) -> list[ContactPoint]: ...
     def set_force_callback(self, body: Body,
                            callback: Callable[[float, int, BodyState], Wrench]) -> None: ...
 

@@ -173,6 +173,24 @@ void bind_space_class(py::module_& m) {
            py::arg("force") = Vec2::Zero().eval(), py::arg("torque") = 0.0)
       .def_readwrite("force", &Wrench::force)
       .def_readwrite("torque", &Wrench::torque);
+  py::class_<Impact>(m, "Impact", "A collision resolved at its time of impact t_c (IM:col2D).")
+      .def_readonly("time", &Impact::time, "t_c [s]")
+      .def_readonly("body_a", &Impact::body_a)
+      .def_readonly("body_b", &Impact::body_b)
+      .def_readonly("normal", &Impact::normal, "unit, from B towards A")
+      .def_readonly("point", &Impact::point, "m, world: the mean of the contact points")
+      .def_readonly("impulse", &Impact::impulse, "j [N·s] on A along the normal");
+  py::class_<ContactPointReport>(m, "ContactPoint",
+                                 "A point where two bodies touched at the end of the last step, "
+                                 "with what the contact solver pushed there.")
+      .def_readonly("body_a", &ContactPointReport::body_a)
+      .def_readonly("body_b", &ContactPointReport::body_b)
+      .def_readonly("point", &ContactPointReport::point, "m, world")
+      .def_readonly("normal", &ContactPointReport::normal, "unit, from B towards A")
+      .def_readonly("normal_impulse", &ContactPointReport::normal_impulse,
+                    "N·s on A along the normal over the last sub-step (≥ 0)")
+      .def_readonly("tangent_impulse", &ContactPointReport::tangent_impulse,
+                    "N·s on A along the normal turned a quarter turn counter-clockwise");
   py::class_<Space, std::unique_ptr<Space>>(
       m, "Space", "Owns the bodies and advances them in time (FR:Simulation-Space).")
       .def(py::init<const Settings&>(), py::arg("settings") = Settings{})
@@ -212,6 +230,12 @@ void bind_space_class(py::module_& m) {
           "remove_body", [](Space& s, const BodyRef& body) { s.remove_body(id_of(s, body)); },
           py::arg("body"), "Removes the body: it no longer moves or collides; ids stay.")
       .def("removed", &Space::removed, py::arg("body"))
+      .def("impacts", &Space::impacts,
+           "The collisions resolved at their time of impact during the last step (IM:col2D).")
+      .def("contact_points", &Space::contact_points,
+           "The points of the contact constraints of the last sub-step, with the impulses the "
+           "solver accumulated there: their normal impulses over the sub-step's length are the "
+           "contact forces.")
       .def(
           "set_force_callback",
           [](Space& s, const BodyRef& body, std::function<Wrench(double, BodyId, BodyState)> f) {

@@ -89,3 +89,51 @@ def test_settings_are_checked_like_the_scene_file():
         gp.Space(settings)
     settings.island_parts = 8
     assert gp.Space(settings).body_count == 0
+
+
+def test_a_dropped_ball_reports_its_impact_at_the_closed_form_time_and_impulse():
+    h0, cr = 10.0, 0.8  # m of fall, C_R of the floor (C_R = max of the two shapes')
+    space = gp.Space(gp.Settings(gravity=(0.0, -G)))
+    space.add_body(gp.BodyDef("ground", type=gp.BodyType.static,
+                              shapes=[gp.ShapeDef(gp.Shape.segment((-10, 0), (10, 0)), cr)]))
+    ball = space.add_body(puck("ball", (0.0, h0 + 0.5)))
+    impacts = []
+    for _ in range(120):  # 2 s: the first bounce only, the second is at 3.7 s
+        space.step(1 / 60)
+        impacts += space.impacts()
+    assert len(impacts) == 1
+    impact = impacts[0]
+    # Free fall for h0: t_c = √(2 h0 / g), at v = √(2 g h0); against a static floor IM:col2D's
+    # j = (1 + C_R) m v.
+    assert impact.time == pytest.approx(math.sqrt(2 * h0 / G), abs=5e-15)
+    assert impact.impulse == pytest.approx((1 + cr) * 2.0 * math.sqrt(2 * G * h0), rel=1e-14)
+    up = 1.0 if impact.body_a == ball else -1.0  # the normal points from B towards A
+    assert {impact.body_a, impact.body_b} == {0, ball}
+    assert list(impact.normal) == pytest.approx([0.0, up], abs=1e-15)
+    assert list(impact.point) == pytest.approx([0.0, 0.0], abs=1e-12)
+
+
+def test_the_contact_points_of_a_box_at_rest_carry_its_weight():
+    space = gp.Space(gp.Settings(gravity=(0.0, -G)))
+    ground = space.add_body(gp.BodyDef("ground", type=gp.BodyType.static,
+                                       shapes=[gp.ShapeDef(gp.Shape.segment((-5, 0), (5, 0)))]))
+    box = space.add_body(gp.BodyDef("box", position=(0.0, 0.5),
+                                    shapes=[gp.ShapeDef(gp.Shape.box(1.0, 1.0))]))
+    dt = 1 / 60
+    for _ in range(60):
+        space.step(dt)
+    points = space.contact_points()
+    assert len(points) == 2  # one at each corner of the box's bottom edge
+    # At rest the floor's impulses over a step cancel what gravity adds, m g dt (the exact solve
+    # of a small island holds to its compliance, 1e-10).
+    assert sum(p.normal_impulse for p in points) == pytest.approx(space.mass(box) * G * dt,
+                                                                  rel=1e-9)
+    for p in points:
+        assert {p.body_a, p.body_b} == {ground, box}
+        assert abs(p.tangent_impulse) < 1e-15
+        up = 1.0 if p.body_a == box else -1.0
+        assert list(p.normal) == pytest.approx([0.0, up], abs=1e-15)
+    # At the corners of the box's bottom edge, on the floor.
+    corners = sorted(tuple(p.point) for p in points)
+    assert [x for corner in corners for x in corner] == pytest.approx([-0.5, 0.0, 0.5, 0.0],
+                                                                      abs=1e-12)
