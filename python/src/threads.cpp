@@ -1,9 +1,7 @@
 // The threads the engine runs on from Python: one by default, as the command line's --threads,
 // since a teacher's scene of a few bodies runs slower when threads share its step.
-#include <string>
-
 #include "bindings.hpp"
-#include "scene/input_error.hpp"
+#include "engine/thread_count.hpp"
 
 namespace gp::python {
 
@@ -26,12 +24,10 @@ void bind_threads(pybind11::module_& m) {
   m.def(
       "set_threads",
       [](int threads) {
-        if (threads < 0) {
-          throw InputError("threads", "must be >= 0 (0: every core)", std::to_string(threads));
-        }
+        const std::size_t count = thread_count(threads, "threads");
         tbb::task_arena& arena = engine_arena();
         arena.terminate();
-        arena.initialize(threads == 0 ? tbb::task_arena::automatic : threads);
+        arena.initialize(count == 0 ? tbb::task_arena::automatic : static_cast<int>(count));
         chosen_threads() = threads;
       },
       pybind11::arg("threads"),

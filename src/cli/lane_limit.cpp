@@ -1,17 +1,12 @@
 #include "cli/lane_limit.hpp"
 
-#include <string>
-
 #include "engine/lanes.hpp"
-#include "scene/input_error.hpp"
 
 namespace gp::cli {
 
 void limit_lanes(std::optional<int> lanes) {
   if (!lanes) return;
-  const std::optional<Lanes> most = lanes_of(*lanes);
-  if (!most) throw InputError("--lanes", "must be 1, 2 or 4", std::to_string(*lanes));
-  gp::limit_lanes(*most);
+  gp::limit_lanes(lanes_of(*lanes, "--lanes"));
 }
 
 }  // namespace gp::cli

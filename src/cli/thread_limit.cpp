@@ -1,18 +1,12 @@
 #include "cli/thread_limit.hpp"
 
-#include <string>
-
-#include "scene/input_error.hpp"
+#include "engine/thread_count.hpp"
 
 namespace gp::cli {
 
 void limit_threads(std::optional<tbb::global_control>& limit, int threads) {
-  if (threads < 0) {
-    throw InputError("--threads", "must be >= 0 (0: every core)", std::to_string(threads));
-  }
-  if (threads > 0) {
-    limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-  }
+  const std::size_t count = thread_count(threads, "--threads");
+  if (count > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, count);
 }
 
 }  // namespace gp::cli

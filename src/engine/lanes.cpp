@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "scene/input_error.hpp"
+
 namespace gp {
 
 namespace {
@@ -32,7 +34,7 @@ void limit_lanes(Lanes most) {
   widest = std::min(cpu_widest, most);
 }
 
-std::optional<Lanes> lanes_of(int doubles) {
+Lanes lanes_of(int doubles, const std::string& field) {
   switch (doubles) {
     case 1:
       return Lanes::kOne;
@@ -41,7 +43,7 @@ std::optional<Lanes> lanes_of(int doubles) {
     case 4:
       return Lanes::kFour;
     default:
-      return std::nullopt;
+      throw InputError(field, "must be 1, 2 or 4", std::to_string(doubles));
   }
 }
 

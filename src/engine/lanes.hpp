@@ -10,7 +10,7 @@
 #define GP_LANES_AVX2 0
 #endif
 
-#include <optional>
+#include <string>
 
 namespace gp {
 
@@ -25,8 +25,10 @@ Lanes widest_lanes();
 /// gives the same bits, which a run on fewer lanes shows. Call it between runs, not during one.
 void limit_lanes(Lanes most);
 
-/// The lanes that take `doubles` doubles at a time (1, 2 or 4); none for another count.
-std::optional<Lanes> lanes_of(int doubles);
+/// The lanes that take `doubles` doubles at a time (1, 2 or 4), as a user asked for them in
+/// `field` (the command line's --lanes, Python's set_lanes); throws an InputError naming `field`
+/// for another count.
+Lanes lanes_of(int doubles, const std::string& field);
 
 /// How many doubles `lanes` take at a time: 1, 2 or 4.
 int doubles_of(Lanes lanes);
