@@ -17,15 +17,16 @@ DT = 1 / 60  # s
 
 
 def stack():
-    """A space with the ground and the three boxes, and the boxes' ids from the bottom up."""
+    """A space with the ground and the three boxes, and the ids of the ground and of the boxes
+    from the bottom up."""
     space = gp.Space(gp.Settings(gravity=(0.0, -G)))
-    space.add_body(gp.BodyDef("ground", type=gp.BodyType.static,
-                              shapes=[gp.ShapeDef(gp.Shape.segment((-5, 0), (5, 0)))]))
+    ground = space.add_body(gp.BodyDef("ground", type=gp.BodyType.static,
+                                       shapes=[gp.ShapeDef(gp.Shape.segment((-5, 0), (5, 0)))]))
     boxes = [space.add_body(gp.BodyDef(
         f"box{k}", position=(0.0, 0.5 + k),
         shapes=[gp.ShapeDef(gp.Shape.box(1.0, 1.0), density=mass)]))
         for k, mass in enumerate(MASSES)]
-    return space, boxes
+    return space, ground, boxes
 
 
 def force(space, below, above):
@@ -36,8 +37,8 @@ def force(space, below, above):
 
 def main():
     args, figure, axes = open_figure(__doc__)
-    space, boxes = stack()
-    pairs = list(zip([0] + boxes[:-1], boxes))  # the ground (body 0) and each box on what it rests
+    space, ground, boxes = stack()
+    pairs = list(zip([ground] + boxes[:-1], boxes))  # each box and what it rests on
     carried = [G * sum(MASSES[k:]) for k in range(len(MASSES))]  # N, the weight above each
     t, series = [], [[] for _ in pairs]
     for _ in range(120):

@@ -94,8 +94,9 @@ def test_settings_are_checked_like_the_scene_file():
 def test_a_dropped_ball_reports_its_impact_at_the_closed_form_time_and_impulse():
     h0, cr = 10.0, 0.8  # m of fall, C_R of the floor (C_R = max of the two shapes')
     space = gp.Space(gp.Settings(gravity=(0.0, -G)))
-    space.add_body(gp.BodyDef("ground", type=gp.BodyType.static,
-                              shapes=[gp.ShapeDef(gp.Shape.segment((-10, 0), (10, 0)), cr)]))
+    ground = space.add_body(gp.BodyDef(
+        "ground", type=gp.BodyType.static,
+        shapes=[gp.ShapeDef(gp.Shape.segment((-10, 0), (10, 0)), cr)]))
     ball = space.add_body(puck("ball", (0.0, h0 + 0.5)))
     impacts = []
     for _ in range(120):  # 2 s: the first bounce only, the second is at 3.7 s
@@ -108,7 +109,7 @@ def test_a_dropped_ball_reports_its_impact_at_the_closed_form_time_and_impulse()
     assert impact.time == pytest.approx(math.sqrt(2 * h0 / G), abs=5e-15)
     assert impact.impulse == pytest.approx((1 + cr) * 2.0 * math.sqrt(2 * G * h0), rel=1e-14)
     up = 1.0 if impact.body_a == ball else -1.0  # the normal points from B towards A
-    assert {impact.body_a, impact.body_b} == {0, ball}
+    assert {impact.body_a, impact.body_b} == {ground, ball}
     assert list(impact.normal) == pytest.approx([0.0, up], abs=1e-15)
     assert list(impact.point) == pytest.approx([0.0, 0.0], abs=1e-12)
 
