@@ -69,6 +69,36 @@ void retest_pairs_of(std::vector<ShapePair>& pairs, const std::vector<Broadphase
   std::sort(pairs.begin(), pairs.end());
 }
 
+/// Whether fattened boxes `a` and `b` overlap once each side is allowed a float's rounding: the
+/// broadphase keeps its boxes' sides as floats rounded outwards, each within 2⁻²² of its
+/// coordinate (a few float steps), so two facing sides within twice that of the larger.
+bool within_float_rounding(const Aabb& a, const Aabb& b) {
+  const double scale = std::max({std::abs(a.min.x()), std::abs(a.min.y()), std::abs(a.max.x()),
+                                 std::abs(a.max.y()), std::abs(b.min.x()), std::abs(b.min.y()),
+                                 std::abs(b.max.x()), std::abs(b.max.y())});
+  return a.fattened(std::ldexp(scale, -21)).overlaps(b);
+}
+
+/// Whether `found` (sorted) is what the broadphase promises for `proxies` fattened by half the
+/// margin: each pair once, every pair of `overlapping` (all-pairs testing's), and besides them
+/// only pairs, not both static, whose boxes overlap within the float rounding of their sides.
+bool as_promised(const std::vector<ShapePair>& found, const std::vector<ShapePair>& overlapping,
+                 const std::vector<BroadphaseProxy>& proxies, double margin) {
+  if (std::adjacent_find(found.begin(), found.end()) != found.end()) return false;
+  if (!std::includes(found.begin(), found.end(), overlapping.begin(), overlapping.end())) {
+    return false;
+  }
+  const std::vector<Aabb> fattened = fattened_bounds(proxies, margin);
+  return std::all_of(found.begin(), found.end(), [&](const ShapePair& p) {
+    return !(proxies[p.first].is_static && proxies[p.second].is_static) &&
+           within_float_rounding(fattened[p.first], fattened[p.second]);
+  });
+}
+bool as_promised(const std::vector<ShapePair>& found, const std::vector<BroadphaseProxy>& proxies,
+                 double margin) {
+  return as_promised(found, all_overlapping_pairs(proxies, margin), proxies, margin);
+}
+
 std::vector<ShapePair> sorted(std::vector<ShapePair> pairs) {
   std::sort(pairs.begin(), pairs.end());
   return pairs;
@@ -114,8 +144,7 @@ TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 ran
   const std::vector<ShapePair> first = sorted(pairs_found(broadphase, proxies));
   const std::vector<ShapePair> expected = all_overlapping_pairs(proxies, margin);
   CHECK(expected.size() > 100);  // the scene does have overlaps to find
-  CHECK(first == expected);
-  CHECK(std::adjacent_find(first.begin(), first.end()) == first.end());  // each pair once
+  CHECK(as_promised(first, expected, proxies, margin));
 
   SECTION("after a small move") {
     std::normal_distribution<double> jiggle(0.0, 0.05);
@@ -124,15 +153,15 @@ TEST_CASE("Sweep and prune finds the same pairs as testing all pairs of 1000 ran
       const Vec2 move(jiggle(random), jiggle(random));
       proxy.bounds = {proxy.bounds.min + move, proxy.bounds.max + move};
     }
-    CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, margin));
+    CHECK(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, margin));
   }
   SECTION("after the proxies were given in another order") {
     std::shuffle(proxies.begin(), proxies.end(), random);
-    CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, margin));
+    CHECK(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, margin));
   }
   SECTION("after proxies were removed") {
     proxies.resize(600);
-    CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, margin));
+    CHECK(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, margin));
   }
 }
 
@@ -185,7 +214,7 @@ TEST_CASE("Sweep and prune kept from step to step finds the pairs of all-pairs t
     }
     const std::vector<ShapePair> found = sorted(pairs_found(broadphase, proxies));
     INFO("step " << step);
-    REQUIRE(found == all_overlapping_pairs(proxies, margin));
+    REQUIRE(as_promised(found, proxies, margin));
     if (broadphase.entries_resorted() < proxies.size() / 4) ++repaired_steps;
   }
   // The steps were mostly repairs, not rebuilds: the path under test is the incremental one.
@@ -217,7 +246,7 @@ TEST_CASE("Sweep and prune shared out among two threads finds the pairs of one t
     const auto by_two = two.execute([&] { return sorted(pairs_found(shared, proxies)); });
     INFO("step " << step);
     REQUIRE(by_two == by_one);
-    if (step == 0 || step == steps - 1) REQUIRE(by_two == all_overlapping_pairs(proxies, margin));
+    if (step == 0 || step == steps - 1) REQUIRE(as_promised(by_two, proxies, margin));
   }
 }
 
@@ -235,7 +264,7 @@ TEST_CASE("Sweep and prune sorts afresh when the boxes were shuffled since the l
     proxy.bounds = Aabb{{-proxy.bounds.max.x(), proxy.bounds.min.y()},
                         {-proxy.bounds.min.x(), proxy.bounds.max.y()}};
   }
-  CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.0));
+  CHECK(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, 0.0));
   CHECK(broadphase.entries_resorted() >= proxies.size());
 }
 
@@ -262,7 +291,7 @@ TEST_CASE("A box sinking a millimetre at every call leaves the bands where they 
     const std::vector<ShapePair> found = sorted(pairs_found(broadphase, proxies));
     retest_pairs_of(expected, proxies, moved, 0.0);
     INFO("call " << call);
-    REQUIRE(found == expected);
+    REQUIRE(as_promised(found, expected, proxies, 0.0));
     if (broadphase.entries_resorted() >= proxies.size()) ++sorted_afresh;
   }
   CHECK(sorted_afresh == 0);
@@ -279,7 +308,7 @@ TEST_CASE("Sweep and prune finds the pairs of a tall stack", "[FR:Determine-Coll
   const std::vector<ShapePair> pairs = sorted(pairs_found(broadphase, proxies));
   CHECK(broadphase.candidates_tested() < 4 * proxies.size());
   CHECK(pairs.size() == 200);  // each box touches the one below it (touching counts)
-  CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
+  CHECK(as_promised(pairs, proxies, 0.0));
 }
 
 TEST_CASE("Sweep and prune compares a few candidates per box in a scene spread both ways",
@@ -301,7 +330,7 @@ TEST_CASE("A huge box makes no more band entries than there are boxes",
   }
   gp::SweepAndPrune broadphase(0.0);
   const std::vector<ShapePair> pairs = sorted(pairs_found(broadphase, proxies));
-  CHECK(pairs == all_overlapping_pairs(proxies, 0.0));
+  CHECK(as_promised(pairs, proxies, 0.0));
   CHECK(broadphase.candidates_tested() < 2 * proxies.size());
 }
 
@@ -356,7 +385,7 @@ TEST_CASE("Boxes reaching the largest doubles are paired without overflow",
                                              {Aabb{{0.0, 0.0}, {1.0, 1.0}}, false},
                                              {Aabb{{5.0, 0.0}, {6.0, 1.0}}, false}};
   gp::SweepAndPrune broadphase(0.0);
-  CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.0));
+  CHECK(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, 0.0));
   CHECK(all_overlapping_pairs(proxies, 0.0) == std::vector<ShapePair>{{0, 1}});
 }
 
@@ -383,10 +412,10 @@ TEST_CASE("Sweep and prune released finds the pairs of all-pairs testing again",
     proxies.push_back(box_proxy({position(random), position(random)}, {1.0, 1.5}, i % 7 == 0));
   }
   gp::SweepAndPrune broadphase(0.1);
-  REQUIRE(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.1));
+  REQUIRE(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, 0.1));
   broadphase.release();
   for (BroadphaseProxy& p : proxies) p.bounds = p.bounds.fattened(0.3);
-  CHECK(sorted(pairs_found(broadphase, proxies)) == all_overlapping_pairs(proxies, 0.1));
+  CHECK(as_promised(sorted(pairs_found(broadphase, proxies)), proxies, 0.1));
   // Placed and sorted from scratch, as nothing was kept.
   CHECK(broadphase.entries_resorted() >= proxies.size());
 }

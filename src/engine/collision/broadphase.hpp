@@ -3,9 +3,11 @@
 // (FR:Determine-Collisions), found by sweep and prune instead of testing all pairs.
 
 #include <algorithm>
+#include <cmath>
 #include <compare>
 #include <concepts>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -61,11 +63,12 @@ class SweepAndPrune {
   explicit SweepAndPrune(double margin = 0.0) : half_margin_(0.5 * margin) {}
 
   /// Replaces `pairs` with the pairs of `boxes` (at most 2³⁰ of them) that, each grown by
-  /// margin / 2 on every side, overlap (touching counts), except static with static; each pair
-  /// once, in no particular order. The caller keeps the pairs, so that it can filter and sort them
-  /// where they are. Allocates nothing once its buffers, and `pairs`, have grown to the scene.
-  /// Fastest when each box keeps its index from call to call. Instantiated in broadphase.cpp for
-  /// ProxyBoxes and SweptBoxes.
+  /// margin / 2 on every side, overlap (touching counts), except static with static, and perhaps
+  /// a few more whose boxes are apart by less than a float's rounding of their sides (at most
+  /// 2⁻²¹ of their largest coordinate: Entry); each pair once, in no particular order. The caller
+  /// keeps the pairs, so that it can filter and sort them where they are. Allocates nothing once
+  /// its buffers, and `pairs`, have grown to the scene. Fastest when each box keeps its index from
+  /// call to call. Instantiated in broadphase.cpp for ProxyBoxes and SweptBoxes.
   template <BroadphaseBoxes Boxes>
   void find_pairs(const Boxes& boxes, std::vector<ShapePair>& pairs);
   void find_pairs(std::span<const BroadphaseProxy> proxies, std::vector<ShapePair>& pairs) {
@@ -85,13 +88,15 @@ class SweepAndPrune {
   std::size_t entries_resorted() const { return entries_resorted_; }
 
  private:
-  /// A grown box, in one of the bands it spans. 40 bytes: there are more entries than
-  /// boxes, and they are most of the broadphase's memory.
+  /// A grown box, in one of the bands it spans. 24 bytes, its sides floats rounded outwards
+  /// (outward): there are more entries than boxes, and they are most of the broadphase's memory.
+  /// A float box still holds its box, so every overlapping pair is still found; the bands, and so
+  /// which band reports a pair, are placed from the doubles.
   struct Entry {
-    double left;
-    double right;
-    double bottom;
-    double top;
+    float left;
+    float right;
+    float bottom;
+    float top;
     std::int32_t band;
     /// Four times the index of the box in the call, plus the flags below.
     std::uint32_t tag;
@@ -172,13 +177,27 @@ class SweepAndPrune {
   void sort_entries();
   void sweep(std::vector<ShapePair>& pairs);
   /// The entry in `band` of box `i`, grown to `grown`, whose bands are `bands`.
+  /// `x` rounded outwards to a float (`out` −1 for a lower side, +1 for an upper one), by at most
+  /// 2⁻²² of |x| and the least float: moved out by at least a float's step (2⁻²⁴ to 2⁻²³ of |x|),
+  /// then rounded to nearest, which moves back by at most half of one. No branch on which way the
+  /// rounding went (float_below's), which goes either way at random at every side of every box at
+  /// every step and cost the sweep half its time again. Past the largest float, where a
+  /// conversion is undefined, the largest float or infinity.
+  static float outward(double x, double out) {
+    constexpr double kLargest = std::numeric_limits<float>::max();
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    const double moved = x + out * (std::abs(x) * 0x1p-23 + 0x1p-149);
+    if (moved > kLargest) return out > 0.0 ? kInfinity : std::numeric_limits<float>::max();
+    if (moved < -kLargest) return out < 0.0 ? -kInfinity : std::numeric_limits<float>::lowest();
+    return static_cast<float>(moved);
+  }
   static Entry entry(const Aabb& grown, std::int32_t band, std::uint32_t i, const BandRange& bands,
                      bool is_static) {
     return Entry{
-        grown.min.x(),
-        grown.max.x(),
-        grown.min.y(),
-        grown.max.y(),
+        outward(grown.min.x(), -1.0),
+        outward(grown.max.x(), 1.0),
+        outward(grown.min.y(), -1.0),
+        outward(grown.max.y(), 1.0),
         band,
         i << 2 | (is_static ? Entry::kStatic : 0) | (band == bands.first ? Entry::kBottom : 0)};
   }
