@@ -25,8 +25,8 @@ void solve_speculative(StepContext& ctx, std::span<const std::uint32_t> stored_a
   }
   for (int level = 0; level < kReach; ++level) {
     scratch.newly.clear();
-    for (std::size_t k = 0; k < resting.size(); ++k) {
-      const std::size_t i = stored_at.empty() ? k : stored_at[k];
+    for (std::uint32_t k = 0; k < resting.size(); ++k) {
+      const std::uint32_t i = stored_at.empty() ? k : stored_at[k];
       const Contact& c = resting[i];
       if (scratch.included[i] || !(scratch.reached[c.body_a] || scratch.reached[c.body_b]))
         continue;
@@ -40,14 +40,17 @@ void solve_speculative(StepContext& ctx, std::span<const std::uint32_t> stored_a
   }
   // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
   // impulses so far, and give h × their final impulses at the end.
-  for (std::size_t i : scratch.nearby) move_by_contact_impulse(resting, resting[i], inertia, -h, s);
+  for (const std::uint32_t i : scratch.nearby)
+    move_by_contact_impulse(resting, resting[i], inertia, -h, s);
   prepare_contacts(speculative, ctx.shapes, inertia, ctx.start, h, settings);
   for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
-    for (std::size_t i : scratch.nearby) solve_contact_once(resting, resting[i], inertia, s);
+    for (const std::uint32_t i : scratch.nearby)
+      solve_contact_once(resting, resting[i], inertia, s);
     for (const Contact& c : speculative) solve_contact_once(speculative, c, inertia, s);
   }
   apply_restitution(speculative, inertia, s);
-  for (std::size_t i : scratch.nearby) move_by_contact_impulse(resting, resting[i], inertia, h, s);
+  for (const std::uint32_t i : scratch.nearby)
+    move_by_contact_impulse(resting, resting[i], inertia, h, s);
   move_by_contact_impulses(speculative, inertia, h, s);
 }
 

@@ -13,9 +13,9 @@ namespace gp {
 
 /// Scratch for solve_speculative, kept by the caller so that a step does not allocate.
 struct SpeculativeScratch {
-  std::vector<char> reached;        // per body
-  std::vector<char> included;       // per resting contact
-  std::vector<std::size_t> nearby;  // resting contacts solved with the impacts
+  std::vector<char> reached;          // per body
+  std::vector<char> included;         // per resting contact
+  std::vector<std::uint32_t> nearby;  // resting contacts solved with the impacts
   std::vector<BodyId> newly;
 };
 
