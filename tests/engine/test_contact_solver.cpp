@@ -128,7 +128,7 @@ TEST_CASE("Bodies moved by their velocity changes move as their contacts' impuls
   points[0].tangent_impulse = 0.05;
   points[1].tangent_impulse = -0.02;
   gp::BodyVelocities before;
-  before.take(box.state);
+  before.take(box.state, {});
   gp::warm_start(box.contacts, box.inertia, box.state);
   gp::MotionState by_contacts = box.state;
   gp::move_by_contact_impulses(box.contacts, box.inertia, kStep, by_contacts);

@@ -14,6 +14,13 @@ class Rotation {
   /// The identity.
   Rotation() = default;
   explicit Rotation(double angle) : cos_(std::cos(angle)), sin_(std::sin(angle)) {}
+  /// The rotation that turns the x axis onto `x_axis` (a unit vector, as x_axis() gives).
+  static Rotation with_x_axis(const Vec2& x_axis) {
+    Rotation r;
+    r.cos_ = x_axis.x();
+    r.sin_ = x_axis.y();
+    return r;
+  }
 
   /// A direction (e.g. a unit normal) turned from body to world axes.
   Vec2 rotate(const Vec2& v) const {

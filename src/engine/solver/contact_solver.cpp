@@ -20,7 +20,7 @@ void ContactSolver::prepare(StepContext& c) {
                   static_cast<std::size_t>(c.settings.stored_in_order_contacts),
                   static_cast<std::size_t>(c.settings.island_parts)});
   batches_.store_in_order(c.contacts);
-  before_impulses_.take(c.state);
+  before_impulses_.take(c.state, positions_.lend_room());
   prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
                          c.state);
 }
@@ -51,6 +51,7 @@ void ContactSolver::apply_restitution(StepContext& c) {
 
 void ContactSolver::move_by_impulses(StepContext& c) {
   move_by_velocity_changes(before_impulses_, c.integrator->impulse_position_share() * c.h, c.state);
+  positions_.take_room(before_impulses_.release());
 }
 
 void ContactSolver::solve_speculative(StepContext& c) {

@@ -45,7 +45,8 @@ class ContactSolver {
   DirectSolveScratch islands_;
   SpeculativeScratch speculative_;
   PositionCorrection positions_;
-  BodyVelocities before_impulses_;  ///< taken in prepare, for move_by_impulses
+  /// Taken in prepare, for move_by_impulses; its room then serves the position passes.
+  BodyVelocities before_impulses_;
 };
 
 }  // namespace gp

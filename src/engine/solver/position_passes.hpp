@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "engine/collision/body_shapes.hpp"
@@ -23,15 +24,29 @@ namespace gp {
 void move_by_contact_impulses(const ContactSet& contacts, const BodyInertia& inertia,
                               double duration, MotionState& s);
 
+/// Room for a vector and a number per body. The velocities before a step's impulses
+/// (BodyVelocities, from the preparation to move_by_velocity_changes) and the position passes'
+/// rotations (RotationCache, after) are never needed at once: the contact solver hands this room
+/// from one to the other, 24 B a body less than each keeping its own.
+struct BodyRoom {
+  std::vector<Vec2> vectors;
+  std::vector<double> numbers;
+};
+
 /// The bodies' velocities at one instant, for move_by_velocity_changes to measure against.
 struct BodyVelocities {
   std::vector<Vec2> linear;     ///< m/s
   std::vector<double> angular;  ///< rad/s
 
-  void take(const MotionState& s) {
-    linear = s.velocity;
-    angular = s.angular_velocity;
+  /// The velocities of `s`, kept in `room`.
+  void take(const MotionState& s, BodyRoom room) {
+    linear = std::move(room.vectors);
+    angular = std::move(room.numbers);
+    linear.assign(s.velocity.begin(), s.velocity.end());
+    angular.assign(s.angular_velocity.begin(), s.angular_velocity.end());
   }
+  /// Gives up the room of the velocities, which are not read again.
+  BodyRoom release() { return {std::move(linear), std::move(angular)}; }
 };
 
 /// move_by_contact_impulses of every contact at once, for velocities that only the contacts'
@@ -60,7 +75,7 @@ class RotationCache {
   void reset(const BodyInertia& inertia, const MotionState& s, const Turn& turn) {
     const std::size_t bodies = s.angle.size();
     angle_.resize(bodies);
-    rotation_.resize(bodies);
+    x_axis_.resize(bodies);
     for_blocks(bodies, kBodiesPerTask, bodies < kParallelBodies,
                [&](std::size_t first, std::size_t last) {
                  for (auto b = static_cast<BodyId>(first); b < last; ++b) {
@@ -80,18 +95,25 @@ class RotationCache {
       angle_[body] = std::numeric_limits<double>::quiet_NaN();
       return;
     }
-    rotation_[body] = rotation_[body].turned(turn);
+    x_axis_[body] = rotation(body).turned(turn).x_axis();
     angle_[body] = angle;
   }
   /// `v` turned by `angle` [rad], the current angle of `body`.
   Vec2 rotate(BodyId body, double angle, const Vec2& v) {
     if (angle_[body] != angle) place(body, angle);
-    return rotation_[body].rotate(v);
+    return rotation(body).rotate(v);
   }
   /// The same, the rotation computed but not kept if it is not already: for threads that may
   /// read the same body at once.
   Vec2 rotate_unkept(BodyId body, double angle, const Vec2& v) const {
-    return (angle_[body] == angle ? rotation_[body] : rotation_by(angle)).rotate(v);
+    return (angle_[body] == angle ? rotation(body) : rotation_by(angle)).rotate(v);
+  }
+  /// Gives up its room, for rotations it no longer needs (the next reset forgets them).
+  BodyRoom release_room() { return {std::move(x_axis_), std::move(angle_)}; }
+  /// Keeps its rotations in `room` from the next reset.
+  void take_room(BodyRoom room) {
+    x_axis_ = std::move(room.vectors);
+    angle_ = std::move(room.numbers);
   }
 
  private:
@@ -102,14 +124,15 @@ class RotationCache {
   }
   void place(BodyId body, double angle) {
     angle_[body] = angle;
-    rotation_[body] = rotation_by(angle);
+    x_axis_[body] = rotation_by(angle).x_axis();
   }
+  Rotation rotation(BodyId body) const { return Rotation::with_x_axis(x_axis_[body]); }
   // Bodies a thread resets at a time (a few nanoseconds each, a task about a microsecond to hand
   // out), and how many make it worth sharing out.
   static constexpr std::size_t kBodiesPerTask = 4096;
   static constexpr std::size_t kParallelBodies = 16384;
   std::vector<double> angle_;  // rad, the angle each rotation is for; NaN: none yet
-  std::vector<Rotation> rotation_;
+  std::vector<Vec2> x_axis_;   // each rotation as its x axis: the room BodyRoom lends
 };
 
 /// How far the position passes go: at most `iterations` passes, on overlaps deeper than `slop` [m].
@@ -144,6 +167,9 @@ class PositionCorrection {
   /// discs four at a time where the CPU has AVX2; the same result on any number of threads.
   void correct(const ContactBatches& batches, const ContactSet& contacts,
                const ContactGeometry& geometry, const PositionLimits& limits, MotionState& s);
+  /// The room of the passes' rotations, lent out between their runs (BodyRoom).
+  BodyRoom lend_room() { return rotations_.release_room(); }
+  void take_room(BodyRoom room) { rotations_.take_room(std::move(room)); }
 
  private:
   template <typename Order>
