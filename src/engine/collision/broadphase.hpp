@@ -176,13 +176,12 @@ class SweepAndPrune {
   /// Restores the order of the entries kept from the last call, then merges in those added.
   void sort_entries();
   void sweep(std::vector<ShapePair>& pairs);
-  /// The entry in `band` of box `i`, grown to `grown`, whose bands are `bands`.
   /// `x` rounded outwards to a float (`out` −1 for a lower side, +1 for an upper one), by at most
   /// 2⁻²² of |x| and the least float: moved out by at least a float's step (2⁻²⁴ to 2⁻²³ of |x|),
   /// then rounded to nearest, which moves back by at most half of one. No branch on which way the
   /// rounding went (float_below's), which goes either way at random at every side of every box at
-  /// every step and cost the sweep half its time again. Past the largest float, where a
-  /// conversion is undefined, the largest float or infinity.
+  /// every step: it took rain4000's broadphase from 181 to 225–269 µs a step. Past the largest
+  /// float, where a conversion is undefined, the largest float or infinity.
   static float outward(double x, double out) {
     constexpr double kLargest = std::numeric_limits<float>::max();
     constexpr float kInfinity = std::numeric_limits<float>::infinity();
@@ -191,6 +190,7 @@ class SweepAndPrune {
     if (moved < -kLargest) return out < 0.0 ? -kInfinity : std::numeric_limits<float>::lowest();
     return static_cast<float>(moved);
   }
+  /// The entry in `band` of box `i`, grown to `grown`, whose bands are `bands`.
   static Entry entry(const Aabb& grown, std::int32_t band, std::uint32_t i, const BandRange& bands,
                      bool is_static) {
     return Entry{
