@@ -90,6 +90,19 @@ bool LocalImpacts::engaged(const StepContext& ctx, const Contact& c) const {
   return false;
 }
 
+void LocalImpacts::join(const StepContext& ctx, BodyId b) {
+  if (ctx.dynamic[b]) roles_[b] = BodyRole::kInSolver;
+}
+
+template <typename Asked>
+void LocalImpacts::join_engaged(const StepContext& ctx, const Asked& asked) {
+  for (const Contact& c : ctx.contacts) {
+    if (!asked(c) || !engaged(ctx, c)) continue;
+    join(ctx, c.body_a);
+    join(ctx, c.body_b);
+  }
+}
+
 void LocalImpacts::hand_over(StepContext& ctx) {
   const WorldShapes& start = ctx.world_start;
   ContactSet& speculative = ctx.speculative_contacts;
@@ -97,19 +110,17 @@ void LocalImpacts::hand_over(StepContext& ctx) {
   // Without impacts there is nothing to hand over, and no role is read before the next step's.
   if (pending_.empty()) return;
   roles_.assign(ctx.dynamic.size(), BodyRole::kFree);
-  const auto join = [this, &ctx](BodyId b) {
-    if (ctx.dynamic[b]) roles_[b] = BodyRole::kInSolver;
-  };
-  // A contact whose dynamic bodies have already joined adds nothing: no need to ask if it is
-  // engaged (most of a pile's contacts).
-  const auto joined = [this, &ctx](BodyId b) {
-    return !ctx.dynamic[b] || roles_[b] == BodyRole::kInSolver;
-  };
-  for (const Contact& c : ctx.contacts) {
-    if ((joined(c.body_a) && joined(c.body_b)) || !engaged(ctx, c)) continue;
-    join(c.body_a);
-    join(c.body_b);
+  // Here only the bodies of the impacts need to know whether they are the solver's: only their
+  // contacts are asked whether they are engaged (most of a pile's are not theirs).
+  for (const Pending& e : pending_) {
+    for (const std::uint32_t shape : {e.pair.first, e.pair.second}) {
+      const BodyId b = ctx.shapes[shape].body;
+      if (ctx.dynamic[b] && roles_[b] == BodyRole::kFree) roles_[b] = BodyRole::kInImpact;
+    }
   }
+  join_engaged(ctx, [this](const Contact& c) {
+    return roles_[c.body_a] == BodyRole::kInImpact || roles_[c.body_b] == BodyRole::kInImpact;
+  });
   for (bool grew = true; grew;) {
     grew = false;
     std::erase_if(pending_, [&](const Pending& e) {
@@ -119,8 +130,8 @@ void LocalImpacts::hand_over(StepContext& ctx) {
       // A margin that reaches the other shape, so that the solver holds the gap closed.
       const ContactManifold m = collide(a, b, signed_distance(a, b) + ctx.settings.contact_margin);
       if (m.count > 0) append_contact(e.pair, ctx.shapes, m, ctx.start, speculative);
-      join(ctx.shapes[e.pair.first].body);
-      join(ctx.shapes[e.pair.second].body);
+      join(ctx, ctx.shapes[e.pair.first].body);
+      join(ctx, ctx.shapes[e.pair.second].body);
       grew = true;
       return true;
     });
@@ -149,6 +160,12 @@ void LocalImpacts::follow_path(BodyId b, double tau, StepContext& ctx) const {
 
 bool LocalImpacts::resolve(StepContext& ctx) {
   if (pending_.empty()) return true;
+  // The search after an impact asks of any body near it whether it is the solver's: the contacts
+  // hand_over() did not ask are asked now. Those of the bodies with impacts are gone.
+  const auto joined = [this, &ctx](BodyId b) {
+    return !ctx.dynamic[b] || roles_[b] == BodyRole::kInSolver;
+  };
+  join_engaged(ctx, [&](const Contact& c) { return !joined(c.body_a) || !joined(c.body_b); });
   const double h = ctx.h;
   MotionState& start = ctx.start;
   const double same_time = simultaneity(h);

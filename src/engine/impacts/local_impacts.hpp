@@ -63,6 +63,11 @@ class LocalImpacts {
   /// state: a point touching, or closing its gap within the sub-step.
   bool engaged(const StepContext& ctx, const Contact& c) const;
   bool in_solver(const StepContext& ctx, std::uint32_t shape) const;
+  /// Makes body b the solver's, if it is dynamic.
+  void join(const StepContext& ctx, BodyId b);
+  /// Joins the bodies of each contact that `asked(contact)` picks and that is engaged.
+  template <typename Asked>
+  void join_engaged(const StepContext& ctx, const Asked& asked);
   bool changed(const ShapeRecord& shape) const {
     return roles_[shape.body] == BodyRole::kResolving;
   }
@@ -85,9 +90,11 @@ class LocalImpacts {
   // speculative contacts); those of a body with an impact are dropped, as its impacts' search
   // covers them. Transitions: hand_over() makes a dynamic body with an engaged contact kInSolver
   // and the bodies of the impacts left kWithImpact; resolve() makes the dynamic bodies of the
-  // impact at hand kResolving, and kWithImpact once it is resolved. kInSolver is final.
+  // impact at hand kResolving, and kWithImpact once it is resolved. kInSolver is final. Only the
+  // bodies of impacts are asked at first (kInImpact until then); resolve() asks the rest.
   enum class BodyRole : std::uint8_t {
-    kFree,        // in no impact and no engaged contact
+    kFree,        // in no impact and no engaged contact, or not yet asked
+    kInImpact,    // dynamic, in a pending impact, not yet found in an engaged contact
     kInSolver,    // dynamic, with a contact engaged over the step: the contact solver's
     kWithImpact,  // in a pending impact, or changed by a resolved one: the exact path's
     kResolving,   // dynamic, in the impact being resolved
