@@ -268,14 +268,6 @@ void invert_block(NormalBlock& k) {
 
 namespace {
 
-// A point apart by less than the passes' velocity tolerance closes over the step counts as
-// touching (target 0): closing its gap or not changes no velocity by more than they are asked to
-// resolve, while in a settled pile, whose points lie 0.1 to 0.2 µm apart, closing each by its own
-// gap keeps the passes switching points between pushing and free at that very scale.
-double touching_gap(const ContactPreparation& in) {
-  return in.settings.velocity_tolerance * in.h;
-}
-
 // A contact's points: their effective masses, targets and bounces.
 void prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
   const BodyInertia& inertia = in.inertia;
@@ -288,7 +280,7 @@ void prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparat
     const DoublePair masses = effective_masses(inertia, c, arm_a, arm_b, tangent);
     p.normal_mass = masses[0];
     p.tangent_mass = masses[1];
-    p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in));
+    p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in.settings, in.h));
   }
   // Without a shape that bounces, no point does, and its approach need not be measured.
   if (!contacts.keeps_bounce_velocities()) return;
@@ -335,6 +327,10 @@ void warm_start_contact(const ContactSet& contacts, std::uint32_t i, const BodyI
 }
 
 }  // namespace
+
+double touching_gap(const Settings& settings, double h) {
+  return settings.velocity_tolerance * h;
+}
 
 void prepare_contacts(ContactSet& contacts, const BodyShapes& shapes, const BodyInertia& inertia,
                       const MotionState& before, double h, const Settings& settings) {
