@@ -166,8 +166,8 @@ TEST_CASE("Two discs or two boxes stacked 1 cm above the floor land on it and re
   const auto upper = space.add_body(body("upper", 3.0 * half + gap));
   for (int k = 0; k < 60; ++k) space.step(1.0 / 60);
   const double slop = settings.linear_slop;
-  // Measured: overlaps of 2.05e-4 to 2.12e-4 m, the slop; both speeds 0 exactly, whose bound
-  // leaves round-off room far below the 0.082 m/s the bodies kept while held above the floor.
+  // Measured: overlaps of 2.05e-4 to 2.12e-4 m, the slop; speeds of 0 (discs) and 7e-8 m/s
+  // (boxes), bounded far below the 0.082 m/s the bodies kept while held above the floor.
   const double floor_gap = space.state(lower).position.y() - half;
   const double stack_gap =
       space.state(upper).position.y() - space.state(lower).position.y() - 2.0 * half;

@@ -79,12 +79,13 @@ void solve_speculative(StepContext& ctx, std::span<const std::uint32_t> stored_a
     }
     for (BodyId b : scratch.newly) scratch.reached[b] = 1;
   }
+  // The lags are read before the stage moves anything.
+  prepare_contacts(speculative, ctx.shapes, inertia, ctx.start, h, settings);
+  close_within_lag(speculative, ctx.start, s, h, settings);
   // What the resting impulses add from here on moves the bodies by h × Δv: take back h × their
   // impulses so far, and give h × their final impulses at the end.
   for (const std::uint32_t i : scratch.nearby)
     move_by_contact_impulse(resting, resting[i], inertia, -h, s);
-  prepare_contacts(speculative, ctx.shapes, inertia, ctx.start, h, settings);
-  close_within_lag(speculative, ctx.start, s, h, settings);
   for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
     for (const std::uint32_t i : scratch.nearby)
       solve_contact_once(resting, resting[i], inertia, s);
