@@ -1,5 +1,8 @@
 #include "engine/solver/speculative.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include "engine/solver/position_passes.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
@@ -17,8 +20,11 @@ struct Lag {
 };
 
 Lag lag_of(const MotionState& start, const MotionState& s, BodyId b, double h) {
+  // Angles are kept in [0, 2π): one that wrapped over the step is 2π off, which the angular lag,
+  // a fraction of a radian, is reduced by.
   return {s.position[b] - start.position[b] - h * s.velocity[b],
-          s.angle[b] - start.angle[b] - h * s.angular_velocity[b]};
+          std::remainder(s.angle[b] - start.angle[b] - h * s.angular_velocity[b],
+                         2.0 * std::numbers::pi)};
 }
 
 // The targets of the speculative points whose gaps are within twice their bodies' lag: the
