@@ -42,6 +42,7 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
   const PackedGeometry packed(kept);
   append(records_, {packed, body, moves, float_above(core_reach(packed)), restitution, friction});
   if (restitution > 0.0) ++bouncing_;
+  if (moves) moving_reach_ = std::max(moving_reach_, reach(packed));
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {

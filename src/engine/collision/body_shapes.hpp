@@ -58,6 +58,10 @@ class BodyShapes {
   const ShapeRecord& operator[](std::size_t i) const { return records_[i]; }
   /// Whether a shape has a coefficient of restitution above 0: without one, no contact bounces.
   bool any_bounce() const { return bouncing_ > 0; }
+  /// The farthest any point of a moving shape (a dynamic or kinematic body's) lies from its
+  /// body's centre of mass [m] (reach), over every shape added: removing a body leaves it, still
+  /// a bound.
+  double moving_reach() const { return moving_reach_; }
 
   /// The indices [first, last) of the shapes of `body`.
   struct Range {
@@ -110,6 +114,7 @@ class BodyShapes {
   PolygonView last_polygon_;          // in the last polygon's block
   std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::size_t bouncing_ = 0;          // shapes with a restitution above 0
+  double moving_reach_ = 0.0;
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 

@@ -31,7 +31,9 @@ void ContactSolver::solve_small_islands(StepContext& c) {
   // it in the step.
   const double unheld_speed = 0.1 * settings.gravity.norm() * c.h;
   gp::solve_small_islands(
-      c.contacts, batches_.islands(), {c.inertia, c.start, c.h, c.settings.gravity},
+      c.contacts, batches_.islands(),
+      {c.inertia, c.start, c.h, c.settings.gravity,
+       c.shapes.moving_reach() + c.settings.contact_margin},
       {static_cast<std::size_t>(settings.direct_solve_points),
        static_cast<std::size_t>(settings.direct_solve_uneven_points),
        settings.direct_solve_mass_ratio,

@@ -261,13 +261,15 @@ bool island_surveyed(const ContactIslands& islands, std::size_t root,
 }
 
 // A resting island whose warm start holds it is left to the passes, which then settle it in a
-// pass or two; a solve costs as much as hundreds of them.
+// pass or two; a solve costs as much as hundreds of them. Where `settled` (surveys_settled), no
+// island is surveyed.
 Reason reason_to_solve(const ContactSet& contacts, const ContactIslands& islands, std::size_t root,
-                       const SurveyedBodies& surveyed, const DirectSolveLimits& limits) {
+                       const SurveyedBodies& surveyed, const DirectSolveLimits& limits,
+                       bool settled) {
   const std::size_t points = islands.points[root];
   if (points == 0) return Reason::kNone;
   if (points <= limits.points) return Reason::kSmall;
-  if (!island_surveyed(islands, root, limits)) return Reason::kNone;
+  if (settled || !island_surveyed(islands, root, limits)) return Reason::kNone;
   const bool uneven_allowed = may_be_uneven(islands, root, limits);
   const bool may_rest = points <= limits.resting_points;
   const IslandSurvey found = survey(contacts, islands, root, surveyed, limits);
@@ -362,6 +364,45 @@ constexpr std::size_t kRestingBodiesPerTask = 8192;
 
 }  // namespace
 
+bool surveys_settled(const IslandBodies& bodies, const MotionState& now,
+                     const DirectSolveLimits& limits) {
+  struct Found {
+    bool still = true;      // no point can close faster than a quarter of the unheld speed
+    double lightest = 0.0;  // as inverse masses [1/kg]
+    double heaviest = std::numeric_limits<double>::infinity();
+  };
+  const BodyInertia& inertia = bodies.inertia;
+  const std::size_t count = inertia.inverse_mass.size();
+  const Found found = reduce_blocks(
+      count, kRestingBodiesPerTask, count < kParallelBodies, Found{},
+      [&](std::size_t first, std::size_t last, Found f) {
+        for (auto b = static_cast<BodyId>(first); b < last; ++b) {
+          const double speed = now.velocity[b].norm();
+          const double turning = std::abs(now.angular_velocity[b]);
+          if (!movable(inertia, b)) {
+            f.still &= speed == 0.0 && turning == 0.0;
+            continue;
+          }
+          // A point's normal velocity is at most the sum of this over its two bodies, as its arm
+          // crossed with the normal is at most contact_reach: twice the largest, half the unheld
+          // speed, leaves room for the round-off of the survey's sums.
+          f.still &= 4.0 * (speed + turning * bodies.contact_reach) <= limits.unheld_speed;
+          const double inverse_mass = inertia.inverse_mass[b];
+          if (inverse_mass > 0.0) {
+            f.lightest = std::max(f.lightest, inverse_mass);
+            f.heaviest = std::min(f.heaviest, inverse_mass);
+          }
+        }
+        return f;
+      },
+      [](const Found& x, const Found& y) {
+        return Found{x.still && y.still, std::max(x.lightest, y.lightest),
+                     std::min(x.heaviest, y.heaviest)};
+      });
+  // An island's lightest is at most the space's, its heaviest at least the space's.
+  return found.still && !(found.lightest > limits.mass_ratio * found.heaviest);
+}
+
 int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
                         const IslandBodies& bodies, const DirectSolveLimits& limits, MotionState& s,
                         DirectSolveScratch& scratch) {
@@ -375,7 +416,10 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   const auto surveyed = [&](BodyId root) { return island_surveyed(islands, root, active); };
   // A body is in as many contacts as it touches shapes: told at rest once, rather than at each.
   scratch.resting.clear();
-  if (std::any_of(islands.roots.begin(), islands.roots.end(), surveyed)) {
+  const bool any_surveyed = std::any_of(islands.roots.begin(), islands.roots.end(), surveyed);
+  // The bodies alone read, rather than every point of a resting pile at every step.
+  const bool settled = any_surveyed && surveys_settled(bodies, s, active);
+  if (any_surveyed && !settled) {
     scratch.resting.resize(body_count);
     for_blocks(body_count, kRestingBodiesPerTask, body_count < kParallelBodies,
                [&](std::size_t first, std::size_t last) {
@@ -386,7 +430,7 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   }
   const SurveyedBodies surveyed_bodies{bodies, scratch.resting, s};
   const auto solve_root = [&](BodyId r, IslandScratch& room, Tally& tally) {
-    const Reason reason = reason_to_solve(contacts, islands, r, surveyed_bodies, active);
+    const Reason reason = reason_to_solve(contacts, islands, r, surveyed_bodies, active, settled);
     if (reason == Reason::kNone) return;
     list_points(contacts, islands, r, bodies.inertia, room);
     // An island let in by its uneven masses, which sequential impulses cannot hold up, is
@@ -412,7 +456,7 @@ int solve_small_islands(ContactSet& contacts, const ContactIslands& islands,
   // An island whose survey the threads share is taken after the islands' loop, alone: from a task
   // of the loop, the survey's tasks would wait on the loop's others.
   const auto on_its_own = [&](BodyId root) {
-    return surveyed(root) && survey_on_threads(islands, root);
+    return !settled && surveyed(root) && survey_on_threads(islands, root);
   };
   const std::vector<BodyId>& roots = islands.roots;
   Tally tally = reduce_blocks(

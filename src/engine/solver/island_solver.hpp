@@ -108,7 +108,19 @@ struct IslandBodies {
   const MotionState& start;
   double h;      ///< s
   Vec2 gravity;  ///< m/s²
+  /// m: the farthest a contact point of a movable body lies from its centre of mass, at least
+  /// (BodyShapes::moving_reach and the contact margin).
+  double contact_reach;
 };
+
+/// Whether the bodies alone tell that no island solve_small_islands surveys is to be solved, so
+/// that the surveys, which read every point, can be skipped: every body not movable is still, and
+/// every movable one so slow in `now` that no point of it can close faster than a quarter of
+/// `limits.unheld_speed` (|v| + |ω| · contact_reach, for each of a point's two bodies; a point's
+/// target is never positive), and no dynamic body is more than `limits.mass_ratio` times as heavy
+/// as another. A resting pile's warm start leaves its bodies many orders of magnitude slower.
+bool surveys_settled(const IslandBodies& bodies, const MotionState& now,
+                     const DirectSolveLimits& limits);
 
 /// For each of the `islands` of `contacts` (contacts joined through the dynamic bodies they share)
 /// within `limits`, sets the points' normal impulses λ to the solution of
