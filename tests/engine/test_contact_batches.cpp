@@ -353,11 +353,12 @@ TEST_CASE("A pyramid is cut between its layers, not through them") {
   CHECK(last == row6_on_row5);
 }
 
-// The contacts run_in_stretches hands over on `threads` threads, stretch after stretch, and how
-// many stretches.
+// The contacts run_in_stretches hands over on `threads` threads, stretch after stretch, how
+// many stretches, and what it returned of the stretches' largest contact indices.
 struct Stretches {
   std::vector<std::uint32_t> contacts;
   std::size_t count = 0;
+  double largest = 0.0;
 };
 
 Stretches stretches_of(const Graph& g, gp::IslandSplitting splitting, int threads = 1) {
@@ -366,10 +367,11 @@ Stretches stretches_of(const Graph& g, gp::IslandSplitting splitting, int thread
   Stretches found;
   std::mutex taking;
   tbb::task_arena(threads).execute([&] {
-    batches.run_in_stretches([&](std::span<const std::uint32_t> stretch) {
+    found.largest = batches.run_in_stretches([&](std::span<const std::uint32_t> stretch) {
       const std::lock_guard<std::mutex> lock(taking);
       found.contacts.insert(found.contacts.end(), stretch.begin(), stretch.end());
       ++found.count;
+      return static_cast<double>(*std::max_element(stretch.begin(), stretch.end()));
     });
   });
   return found;
@@ -388,9 +390,15 @@ TEST_CASE("In stretches, the contacts come in the order of the visit one at a ti
   const Graph coloured = chain(kColouredAbove + 10);
   CHECK(stretches_of(coloured, {0, kColouredAbove}).contacts == visits(coloured));
   // On two threads, every contact once still.
-  std::vector<std::uint32_t> shared = stretches_of(coloured, {0, kColouredAbove}, 2).contacts;
+  const Stretches on_two = stretches_of(coloured, {0, kColouredAbove}, 2);
+  std::vector<std::uint32_t> shared = on_two.contacts;
   std::sort(shared.begin(), shared.end());
   CHECK(shared == in_order(coloured.contacts.size()));
+  // What it returns: the largest of what the stretches returned, on one thread or two.
+  const auto last = static_cast<double>(coloured.contacts.size() - 1);
+  CHECK(on_two.largest == last);
+  CHECK(stretches_of(coloured, {0, kColouredAbove}).largest == last);
+  CHECK(parts.largest == static_cast<double>(parted.contacts.size() - 1));
 }
 
 TEST_CASE("Colouring an island takes precedence over parting it") {

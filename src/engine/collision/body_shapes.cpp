@@ -42,7 +42,10 @@ void BodyShapes::add(BodyId body, const Shape& local, double restitution, double
   const PackedGeometry packed(kept);
   append(records_, {packed, body, moves, float_above(core_reach(packed)), restitution, friction});
   if (restitution > 0.0) ++bouncing_;
-  if (moves) moving_reach_ = std::max(moving_reach_, reach(packed));
+  const double shape_reach = gp::reach(packed);
+  reach_ = std::max(reach_, shape_reach);
+  if (moves) moving_reach_ = std::max(moving_reach_, shape_reach);
+  if (records_.back().offset_disc()) ++offset_discs_;
 }
 
 BodyShapes::Range BodyShapes::of_body(BodyId body) const {
@@ -65,6 +68,7 @@ BodyShapes::Range BodyShapes::remove_body(BodyId body) {
   for (auto r = before; r != after; ++r) {
     if (is_polygon(*r)) polygon_vertices_ -= r->local.polygon().vertices.size();
     if (r->restitution > 0.0) --bouncing_;
+    if (r->offset_disc()) --offset_discs_;
   }
   polygons_.erase(polygons_.begin() + first_block, polygons_.begin() + first_block + blocks);
   last_polygon_ = {};  // its block may have gone with the body

@@ -37,6 +37,8 @@ struct ShapeRecord {
   bool centred_disc() const {
     return local.kind() == ShapeKind::kCircle && local.circle().center == Vec2::Zero();
   }
+  /// Whether this is a disc off its body's centre of mass.
+  bool offset_disc() const { return local.kind() == ShapeKind::kCircle && !centred_disc(); }
   /// Where this shape is when its body's centre of mass is at `position`, turned by `angle`: a
   /// disc about the centre of mass is not turned, so that placing it needs no sine.
   Transform frame(const Vec2& position, double angle) const {
@@ -62,6 +64,10 @@ class BodyShapes {
   /// body's centre of mass [m] (reach), over every shape added: removing a body leaves it, still
   /// a bound.
   double moving_reach() const { return moving_reach_; }
+  /// The same over every shape, static ones included [m].
+  double reach() const { return reach_; }
+  /// Whether a disc lies off its body's centre of mass (AnchorKind::kOffsetDisc).
+  bool any_offset_disc() const { return offset_discs_ > 0; }
 
   /// The indices [first, last) of the shapes of `body`.
   struct Range {
@@ -115,6 +121,8 @@ class BodyShapes {
   std::size_t polygon_vertices_ = 0;  // of all the polygons among the shapes
   std::size_t bouncing_ = 0;          // shapes with a restitution above 0
   double moving_reach_ = 0.0;
+  double reach_ = 0.0;
+  std::size_t offset_discs_ = 0;
   std::vector<std::uint32_t> first_;  // per body up to the last with shapes: its first shape
 };
 

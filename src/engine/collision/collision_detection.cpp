@@ -57,7 +57,7 @@ void find_centre_gaps(const WorldShapes& world, std::span<const ShapePair> pairs
 
 AnchorKind anchor_kind(const ShapeRecord& shape) {
   if (shape.centred_disc()) return AnchorKind::kCentredDisc;
-  return shape.local.kind() == ShapeKind::kCircle ? AnchorKind::kOffsetDisc : AnchorKind::kFixed;
+  return shape.offset_disc() ? AnchorKind::kOffsetDisc : AnchorKind::kFixed;
 }
 
 // Fills in contact `c`, just appended with its `points`, from the manifold `m` of `pair` found

@@ -141,15 +141,11 @@ class ContactBatches {
   /// run(solve)'s visit, a stretch of contacts at a time: `solve_stretch(contact indices)` takes
   /// the contacts of the tasks of a stage that a thread takes together, or of a colour's block,
   /// in their order. A pass can then do what each contact needs alone for several contacts at
-  /// once, overlapping their chains of divisions, before what must follow their order.
+  /// once, overlapping their chains of divisions, before what must follow their order. Returns
+  /// the largest value solve_stretch returns.
   template <typename SolveStretch>
-  void run_in_stretches(const SolveStretch& solve_stretch) const {
-    run([](std::uint32_t) { return 0.0; },
-        [&](std::span<const std::uint32_t> stretch) {
-          solve_stretch(stretch);
-          return 0.0;
-        },
-        Visit{.whole_blocks = true});
+  double run_in_stretches(const SolveStretch& solve_stretch) const {
+    return run([](std::uint32_t) { return 0.0; }, solve_stretch, Visit{.whole_blocks = true});
   }
 
   /// The same, a task's contacts visited as `visit` says, but contacts that share no movable body

@@ -1,5 +1,8 @@
 #include "engine/solver/contact_solver.hpp"
 
+#include <limits>
+#include <utility>
+
 #include "engine/solver/velocity_passes.hpp"
 #include "engine/step/step_context.hpp"
 
@@ -21,8 +24,8 @@ void ContactSolver::prepare(StepContext& c) {
                   static_cast<std::size_t>(c.settings.island_parts)});
   batches_.store_in_order(c.contacts);
   before_impulses_.take(c.state, positions_.lend_room());
-  prepare_and_warm_start(batches_, c.contacts, {c.shapes, c.inertia, c.start, c.h, c.settings},
-                         c.state);
+  deepest_ = prepare_and_warm_start(batches_, c.contacts,
+                                    {c.shapes, c.inertia, c.start, c.h, c.settings}, c.state);
 }
 
 void ContactSolver::solve_small_islands(StepContext& c) {
@@ -64,8 +67,12 @@ void ContactSolver::solve_speculative(StepContext& c) {
 }
 
 void ContactSolver::correct_positions(StepContext& c) {
-  positions_.correct(batches_, c.contacts, {c.shapes, c.inertia, c.start},
-                     position_limits(c.settings), c.state);
+  const ContactGeometry geometry{c.shapes, c.inertia, c.start};
+  const PositionLimits limits = position_limits(c.settings);
+  // Read once: a later sub-step's contacts have a deepest of their own.
+  const double deepest = std::exchange(deepest_, std::numeric_limits<double>::infinity());
+  if (surely_within_slop(deepest, c.settings.contact_margin, geometry, limits, c.state)) return;
+  positions_.correct(batches_, c.contacts, geometry, limits, c.state);
 }
 
 void ContactSolver::restore_order(StepContext& c) {

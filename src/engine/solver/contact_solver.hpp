@@ -6,6 +6,8 @@
 // solve of an uneven island over 64 points), and the order of the contacts' passes
 // (ContactBatches), which run on the threads of the current task arena.
 
+#include <limits>
+
 #include "engine/solver/contact_batches.hpp"
 #include "engine/solver/island_solver.hpp"
 #include "engine/solver/position_passes.hpp"
@@ -45,6 +47,8 @@ class ContactSolver {
   DirectSolveScratch islands_;
   SpeculativeScratch speculative_;
   PositionCorrection positions_;
+  /// m: the deepest overlap of the contacts prepare found, until correct_positions reads it.
+  double deepest_ = std::numeric_limits<double>::infinity();
   /// Taken in prepare, for move_by_impulses; its room then serves the position passes.
   BodyVelocities before_impulses_;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <type_traits>
 
@@ -206,7 +207,57 @@ struct PointOverlap {
 // a microsecond to hand out.
 constexpr std::size_t kScannedContactsPerTask = 4096;
 
+// The larger of a and b, NaN if either is: a NaN must not pass a bound unseen.
+double larger(double a, double b) {
+  return b > a || std::isnan(b) ? b : a;
+}
+
 }  // namespace
+
+bool surely_within_slop(double deepest, double margin, const ContactGeometry& geometry,
+                        const PositionLimits& limits, const MotionState& now) {
+  const BodyShapes& shapes = geometry.shapes;
+  const MotionState& detected = geometry.detected;
+  if (shapes.any_offset_disc() || !(deepest < limits.slop)) return false;
+  // The most any body moved (the 1-norm, at least the length) and turned since detection, and the
+  // farthest from the origin any is (the scale of the round-off).
+  struct Found {
+    double travel = 0.0;  // m
+    double turn = 0.0;    // rad
+    double extent = 0.0;  // m
+  };
+  const auto extent = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
+  const std::size_t count = now.position.size();
+  const Found found = reduce_blocks(
+      count, kMovedBodiesPerTask, count < 2 * kMovedBodiesPerTask, Found{},
+      [&](std::size_t first, std::size_t last, Found f) {
+        for (std::size_t b = first; b < last; ++b) {
+          f.travel = larger(f.travel, extent(now.position[b] - detected.position[b]));
+          // Angles are kept in [0, 2π): a body rocking about 0 wraps by a whole turn, which is
+          // taken off (std::remainder, called only then: it costs tens of nanoseconds).
+          double turn = std::abs(now.angle[b] - detected.angle[b]);
+          if (turn > std::numbers::pi)
+            turn = std::abs(std::remainder(turn, 2.0 * std::numbers::pi));
+          f.turn = larger(f.turn, turn);
+          f.extent = larger(f.extent, extent(now.position[b]));
+        }
+        return f;
+      },
+      [](const Found& x, const Found& y) {
+        return Found{larger(x.travel, y.travel), larger(x.turn, y.turn),
+                     larger(x.extent, y.extent)};
+      });
+  // A deepest point's arm: to the contact point, midway between the shapes' surfaces (within the
+  // shape's reach and half the margin or the depth), and half the depth along the normal. Only
+  // dynamic and kinematic bodies turn, whose shapes move.
+  const double beyond = std::max(deepest, margin);
+  const double turning_arm = shapes.moving_reach() + beyond;
+  const double any_arm = shapes.reach() + beyond;
+  constexpr double kRoundOff = 1e-12;  // as MovedSinceDetection's, relative to the scales
+  const double moved = 2.0 * found.travel + 2.0 * found.turn * turning_arm +
+                       kRoundOff * (1.0 + 2.0 * found.extent + 2.0 * any_arm);
+  return moved <= 0.5 * (limits.slop - deepest);
+}
 
 template <typename Order>
 void PositionCorrection::correct_in(const Order& order, const ContactSet& contacts,

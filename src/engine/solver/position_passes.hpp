@@ -149,6 +149,16 @@ struct ContactGeometry {
   const MotionState& detected;
 };
 
+/// Whether every point of a set of contacts, found in `geometry.detected` and none then overlapping
+/// by more than `deepest` [m], surely overlaps by no more than `limits.slop` in `now`, told from
+/// the bodies alone: a point's deepest points have moved into each other by at most their bodies'
+/// displacements and their turns (reduced to within half a turn) times their arms, which reach no
+/// farther than the shapes' reach and the contact `margin` [m]. The position passes would then
+/// move nothing, and a resting pile's every point need not be read. Half the slop left is kept
+/// for round-off. Never where a disc lies off its body's centre of mass.
+bool surely_within_slop(double deepest, double margin, const ContactGeometry& geometry,
+                        const PositionLimits& limits, const MotionState& now);
+
 /// The position passes, with the rotations they turn bodies by kept between steps so that a step
 /// does not allocate.
 class PositionCorrection {

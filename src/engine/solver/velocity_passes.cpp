@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "engine/geometry/transform.hpp"
@@ -268,13 +269,16 @@ void invert_block(NormalBlock& k) {
 
 namespace {
 
-// A contact's points: their effective masses, targets and bounces.
-void prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
+// A contact's points: their effective masses, targets and bounces. Returns the deepest point's
+// overlap [m].
+double prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparation& in) {
   const BodyInertia& inertia = in.inertia;
   const Contact& c = contacts[i];
   const Vec2 tangent = contact_tangent(c.normal);
   const std::span<ContactPointState> points = contacts.points(c);
+  double deepest = -std::numeric_limits<double>::infinity();
   for (ContactPointState& p : points) {
+    deepest = std::max(deepest, static_cast<double>(p.depth));
     const Vec2 arm_a = gp::arm_a(c, p);
     const Vec2 arm_b = gp::arm_b(c, p);
     const DoublePair masses = effective_masses(inertia, c, arm_a, arm_b, tangent);
@@ -283,7 +287,7 @@ void prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparat
     p.target_normal_velocity = closing_target(p.depth, in.h, touching_gap(in.settings, in.h));
   }
   // Without a shape that bounces, no point does, and its approach need not be measured.
-  if (!contacts.keeps_bounce_velocities()) return;
+  if (!contacts.keeps_bounce_velocities()) return deepest;
   const std::span<double> bounces = contacts.bounce_velocities(c);
   for (std::size_t k = 0; k < points.size(); ++k) {
     const double approach = contact_normal_velocity(in.before, c, points[k]);
@@ -294,14 +298,17 @@ void prepare_points(ContactSet& contacts, std::uint32_t i, const ContactPreparat
                      ? contact_restitution(in.shapes, c) * approach
                      : 0.0;
   }
+  return deepest;
 }
 
 // Each of `part`'s contacts prepared: its points, then the block of a two-point contact. Step by
 // step over all of them, each step's divisions independent from contact to contact, so that the
-// processor overlaps them rather than waiting on each contact's chain of three in turn.
-void prepare_part(ContactSet& contacts, std::span<const std::uint32_t> part,
-                  const ContactPreparation& in) {
-  for (const std::uint32_t i : part) prepare_points(contacts, i, in);
+// processor overlaps them rather than waiting on each contact's chain of three in turn. Returns
+// the deepest point's overlap [m].
+double prepare_part(ContactSet& contacts, std::span<const std::uint32_t> part,
+                    const ContactPreparation& in) {
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const std::uint32_t i : part) deepest = std::max(deepest, prepare_points(contacts, i, in));
   for (const std::uint32_t i : part) {
     const Contact& c = contacts[i];
     if (c.count() == 2) {
@@ -313,6 +320,7 @@ void prepare_part(ContactSet& contacts, std::span<const std::uint32_t> part,
     const Contact& c = contacts[i];
     if (c.count() == 2) invert_block(contacts.block(c));
   }
+  return deepest;
 }
 
 void warm_start_contact(const ContactSet& contacts, std::uint32_t i, const BodyInertia& inertia,
@@ -345,19 +353,21 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
   for (std::uint32_t i = 0; i < contacts.size(); ++i) warm_start_contact(contacts, i, inertia, s);
 }
 
-void prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
-                            const ContactPreparation& preparation, MotionState& s) {
+double prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
+                              const ContactPreparation& preparation, MotionState& s) {
   contacts.keep_bounce_velocities(preparation.shapes.any_bounce());
   // A contact's preparation stands alone, and its chain of divisions (its effective masses, then
   // its block's inverse) is long: several contacts prepared at once overlap theirs. Their warm
   // starts follow, in their order.
   constexpr std::size_t kPreparedAtOnce = 16;
-  batches.run_in_stretches([&](std::span<const std::uint32_t> stretch) {
+  return batches.run_in_stretches([&](std::span<const std::uint32_t> stretch) {
+    double deepest = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < stretch.size(); k += kPreparedAtOnce) {
       const auto part = stretch.subspan(k, std::min(kPreparedAtOnce, stretch.size() - k));
-      prepare_part(contacts, part, preparation);
+      deepest = std::max(deepest, prepare_part(contacts, part, preparation));
       for (const std::uint32_t i : part) warm_start_contact(contacts, i, preparation.inertia, s);
     }
+    return deepest;
   });
 }
 

@@ -100,8 +100,9 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
 /// prepare_contacts, then warm_start into `s` (not `preparation.before`), contact by contact in
 /// the order of `batches`, on the threads of the current task arena: one pass over the contacts
 /// rather than two, with the same result, as preparing a contact reads no velocity of `s`.
-void prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
-                            const ContactPreparation& preparation, MotionState& s);
+/// Returns the deepest point's overlap [m] (ContactPointState::depth), or 0 if none overlaps.
+double prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
+                              const ContactPreparation& preparation, MotionState& s);
 
 /// At most `iterations` passes of sequential impulses over the points' friction and normal
 /// constraints (no bounce: restitution comes after, in apply_restitution), ending after the
