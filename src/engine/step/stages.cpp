@@ -257,7 +257,8 @@ constexpr std::array kStages{
             text << "normal impulses of islands of at most " << c.settings.direct_solve_points
                  << " points, or " << c.settings.direct_solve_uneven_points
                  << " where masses differ more than " << c.settings.direct_solve_mass_ratio
-                 << "-fold, all at once (active set)";
+                 << "-fold, all at once (active set); resting islands surveyed unless every body "
+                    "is too slow to be unheld";
             return text.str();
           },
           on_contacts<&ContactSolver::solve_small_islands>},
@@ -292,11 +293,14 @@ constexpr std::array kStages{
             return std::string("impacts on resting bodies, solved with the contacts near them");
           },
           solve_speculative},
-    Stage{
-        "position correction", "FR:Determine-Collision-Response-Over-Time",
-        kLocalPass | kSubStepPass, collides,
-        [](const StepContext&) { return std::string("overlap removed by moving positions only"); },
-        on_contacts<&ContactSolver::correct_positions>},
+    Stage{"position correction", "FR:Determine-Collision-Response-Over-Time",
+          kLocalPass | kSubStepPass, collides,
+          [](const StepContext&) {
+            return std::string(
+                "overlap removed by moving positions only; none at a step whose bodies moved too "
+                "little for any point to pass the slop");
+          },
+          on_contacts<&ContactSolver::correct_positions>},
     Stage{"warm starts kept", "", kLocalPass | kSubStepPass, collides,
           [](const StepContext&) {
             return std::string(
