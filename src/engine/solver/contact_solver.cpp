@@ -1,5 +1,6 @@
 #include "engine/solver/contact_solver.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -33,10 +34,12 @@ void ContactSolver::solve_small_islands(StepContext& c) {
   // A resting island is held when no point closes faster than a tenth of what gravity adds to
   // it in the step.
   const double unheld_speed = 0.1 * settings.gravity.norm() * c.h;
+  // A contact point lies midway between the shapes' surfaces, at most the margin apart or, in an
+  // island at rest, the slop deep.
+  const double contact_reach =
+      c.shapes.moving_reach() + std::max(settings.contact_margin, settings.linear_slop);
   gp::solve_small_islands(
-      c.contacts, batches_.islands(),
-      {c.inertia, c.start, c.h, c.settings.gravity,
-       c.shapes.moving_reach() + c.settings.contact_margin},
+      c.contacts, batches_.islands(), {c.inertia, c.start, c.h, settings.gravity, contact_reach},
       {static_cast<std::size_t>(settings.direct_solve_points),
        static_cast<std::size_t>(settings.direct_solve_uneven_points),
        settings.direct_solve_mass_ratio,

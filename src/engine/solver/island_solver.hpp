@@ -108,8 +108,8 @@ struct IslandBodies {
   const MotionState& start;
   double h;      ///< s
   Vec2 gravity;  ///< m/s²
-  /// m: the farthest a contact point of a movable body lies from its centre of mass, at least
-  /// (BodyShapes::moving_reach and the contact margin).
+  /// m: the farthest a contact point of a movable body in an island at rest lies from its centre
+  /// of mass, at least (BodyShapes::moving_reach, and the contact margin or the slop).
   double contact_reach;
 };
 
