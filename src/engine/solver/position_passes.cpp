@@ -4,7 +4,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <numbers>
 #include <span>
 #include <type_traits>
 
@@ -233,12 +232,7 @@ bool surely_within_slop(double deepest, double margin, const ContactGeometry& ge
       [&](std::size_t first, std::size_t last, Found f) {
         for (std::size_t b = first; b < last; ++b) {
           f.travel = larger(f.travel, extent(now.position[b] - detected.position[b]));
-          // Angles are kept in [0, 2π): a body rocking about 0 wraps by a whole turn, which is
-          // taken off (std::remainder, called only then: it costs tens of nanoseconds).
-          double turn = std::abs(now.angle[b] - detected.angle[b]);
-          if (turn > std::numbers::pi)
-            turn = std::abs(std::remainder(turn, 2.0 * std::numbers::pi));
-          f.turn = larger(f.turn, turn);
+          f.turn = larger(f.turn, std::abs(within_half_turn(now.angle[b] - detected.angle[b])));
           f.extent = larger(f.extent, extent(now.position[b]));
         }
         return f;

@@ -1,8 +1,6 @@
 #include "engine/solver/speculative.hpp"
 
-#include <cmath>
-#include <numbers>
-
+#include "engine/geometry/transform.hpp"
 #include "engine/solver/position_passes.hpp"
 #include "engine/solver/velocity_passes.hpp"
 
@@ -20,11 +18,9 @@ struct Lag {
 };
 
 Lag lag_of(const MotionState& start, const MotionState& s, BodyId b, double h) {
-  // Angles are kept in [0, 2π): one that wrapped over the step is 2π off, which the angular lag,
-  // a fraction of a radian, is reduced by.
+  // The angular lag is a fraction of a radian; an angle that wrapped over the step is 2π off.
   return {s.position[b] - start.position[b] - h * s.velocity[b],
-          std::remainder(s.angle[b] - start.angle[b] - h * s.angular_velocity[b],
-                         2.0 * std::numbers::pi)};
+          within_half_turn(s.angle[b] - start.angle[b] - h * s.angular_velocity[b])};
 }
 
 // The targets of the speculative points whose gaps are within twice their bodies' lag: the
