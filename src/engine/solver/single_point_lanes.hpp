@@ -21,8 +21,9 @@ namespace gp {
 double solve_single_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                            const BodyInertia& inertia, MotionState& s);
 
-/// How the velocity passes take a level's or a colour's one-point contacts, for --explain: "four
-/// at a time (AVX2)" where four_lanes(), else "one at a time".
-const char* single_points_name();
+/// How the velocity passes take a level's or a colour's one-point contacts, and a colour's
+/// two-point ones (solve_two_points), for --explain: "four at a time (AVX2)" where four_lanes(),
+/// else "one at a time".
+const char* contact_lanes_name();
 
 }  // namespace gp

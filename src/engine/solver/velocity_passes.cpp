@@ -8,6 +8,7 @@
 #include "engine/geometry/transform.hpp"
 #include "engine/solver/direction_pair.hpp"
 #include "engine/solver/single_point_lanes.hpp"
+#include "engine/solver/two_point_lanes.hpp"
 #include "gamephysics/models/dd/angular_displacement.hpp"
 #include "gamephysics/models/dd/impulse.hpp"
 #include "gamephysics/models/dd/torque.hpp"
@@ -447,28 +448,27 @@ int solve_velocities(ContactSet& contacts, const BodyInertia& inertia, int itera
 namespace {
 
 // One pass over contacts that share no movable body (a colour's, a level's), whose one-point
-// contacts ContactBatches hands over first: those four at a time where the CPU has AVX2, the
-// others one by one. Returns the largest change.
+// contacts ContactBatches hands over first and its two-point ones after: each kind four at a time
+// where the CPU has AVX2, else one by one. Returns the largest change.
 double solve_independent(ContactSet& contacts, std::span<const std::uint32_t> independent,
                          const BodyInertia& inertia, MotionState& s) {
-  std::size_t single = 0;
-  if (four_lanes()) {
-    single = static_cast<std::size_t>(
-        std::partition_point(independent.begin(), independent.end(),
-                             [&](std::uint32_t i) { return contacts[i].count() == 1; }) -
-        independent.begin());
-  }
-  double largest = 0.0;
+  const auto one_by_one = [&](std::span<const std::uint32_t> some) {
+    double largest = 0.0;
+    for (const std::uint32_t i : some) {
+      largest = std::max(largest, solve_once(contacts, contacts[i], inertia, s));
+    }
+    return largest;
+  };
+  if (!four_lanes()) return one_by_one(independent);
+  const auto single = independent.first(static_cast<std::size_t>(
+      std::partition_point(independent.begin(), independent.end(),
+                           [&](std::uint32_t i) { return contacts[i].count() == 1; }) -
+      independent.begin()));
+  const auto pairs = independent.subspan(single.size());
   // One contact alone is solved as fast one at a time.
-  if (single > 1) {
-    largest = solve_single_points(contacts, independent.first(single), inertia, s);
-  } else {
-    single = 0;
-  }
-  for (const std::uint32_t i : independent.subspan(single)) {
-    largest = std::max(largest, solve_once(contacts, contacts[i], inertia, s));
-  }
-  return largest;
+  return std::max(
+      single.size() > 1 ? solve_single_points(contacts, single, inertia, s) : one_by_one(single),
+      pairs.size() > 1 ? solve_two_points(contacts, pairs, inertia, s) : one_by_one(pairs));
 }
 
 }  // namespace

@@ -272,9 +272,13 @@ constexpr std::array kStages{
                 std::to_string(c.settings.velocity_iterations) +
                 " passes, ending once a pass changes no velocity by more than the "
                 "tolerance; islands of one-point contacts by levels of contacts that "
-                "share no body, ";
-            if (c.settings.coloured_island_contacts > 0) text += "and coloured islands by colour, ";
-            return text + "their one-point contacts " + single_points_name();
+                "share no body, their contacts " +
+                contact_lanes_name();
+            if (c.settings.coloured_island_contacts > 0) {
+              text += "; coloured islands by colour, their one-point and two-point contacts " +
+                      std::string(contact_lanes_name());
+            }
+            return text;
           },
           on_contacts<&ContactSolver::solve_velocities>},
     Stage{"contact solver: restitution", "IM:col2D", kLocalPass | kSubStepPass, bounces,
