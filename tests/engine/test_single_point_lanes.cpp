@@ -2,7 +2,6 @@
 // same bits as one at a time, and the conditions of a sequential-impulse pass checked by hand on
 // the velocities it leaves.
 
-#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -58,22 +57,9 @@ struct Colour : gp::test::RandomColour {
   }
 };
 
-std::uint64_t bits(double x) {
-  return std::bit_cast<std::uint64_t>(x);
-}
-
-// One pass over `colour`'s contacts in runs of `runs` contacts each (the runs a colour's blocks of
-// contacts or a level are handed out in, of any length, the last four lanes or fewer); returns the
-// largest change.
+// One pass over `colour`'s contacts four at a time in runs of `runs` contacts each.
 double pass_in_runs(Colour& colour, std::span<const std::size_t> runs) {
-  double largest = 0.0;
-  for (std::size_t first = 0; const std::size_t run : runs) {
-    largest = std::max(
-        largest, gp::solve_single_points(colour.set, std::span(colour.indices).subspan(first, run),
-                                         colour.inertia, colour.state));
-    first += run;
-  }
-  return largest;
+  return gp::test::pass_in_runs(colour, runs, gp::solve_single_points);
 }
 
 TEST_CASE("Independent one-point contacts four at a time are the same to the bit as one at a time",
@@ -82,38 +68,13 @@ TEST_CASE("Independent one-point contacts four at a time are the same to the bit
     WARN("no AVX2 on this CPU: the velocity passes take contacts one at a time");
     return;
   }
-  // Runs that start and end anywhere, of one to eleven contacts.
-  const std::vector<std::vector<std::size_t>> runs_of{{11}, {3, 8}, {1, 2, 6, 2}, {7, 4}};
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    for (const std::vector<std::size_t>& runs : runs_of) {
-      Colour lanes(seed);
-      Colour one(seed);
-      const double largest_lanes = pass_in_runs(lanes, runs);
-      double largest_one = 0.0;
-      for (const std::uint32_t i : one.indices) {
-        largest_one = std::max(largest_one,
-                               gp::solve_contact_once(one.set, one.set[i], one.inertia, one.state));
-      }
-      INFO("seed " << seed << ", " << runs.size() << " runs");
-      CHECK(bits(largest_lanes) == bits(largest_one));
-      for (std::size_t b = 0; b < lanes.state.velocity.size(); ++b) {
-        CHECK(bits(lanes.state.velocity[b].x()) == bits(one.state.velocity[b].x()));
-        CHECK(bits(lanes.state.velocity[b].y()) == bits(one.state.velocity[b].y()));
-        CHECK(bits(lanes.state.angular_velocity[b]) == bits(one.state.angular_velocity[b]));
-      }
-      for (const std::uint32_t i : lanes.indices) {
-        const gp::ContactPointState& p = lanes.set.points(lanes.set[i])[0];
-        const gp::ContactPointState& q = one.set.points(one.set[i])[0];
-        CHECK(bits(p.normal_impulse) == bits(q.normal_impulse));
-        CHECK(bits(p.tangent_impulse) == bits(q.tangent_impulse));
-      }
-      // The idle contact (4) and the static body (0) are left as they were, −0.0 included.
-      CHECK(lanes.set.points(lanes.set[4])[0].normal_impulse == 0.0);
-      CHECK(std::signbit(lanes.state.velocity[9].x()));
-      CHECK(std::signbit(lanes.state.angular_velocity[10]));
-      CHECK(lanes.state.velocity[0] == gp::Vec2::Zero());
-    }
-  }
+  gp::test::check_as_one_at_a_time<Colour>(gp::solve_single_points, [](const Colour& colour) {
+    // The idle contact (4) and the static body (0) are left as they were, −0.0 included.
+    CHECK(colour.set.points(colour.set[4])[0].normal_impulse == 0.0);
+    CHECK(std::signbit(colour.state.velocity[9].x()));
+    CHECK(std::signbit(colour.state.angular_velocity[10]));
+    CHECK(colour.state.velocity[0] == gp::Vec2::Zero());
+  });
 }
 
 TEST_CASE("After a pass four at a time, each contact meets its normal condition and friction cone",

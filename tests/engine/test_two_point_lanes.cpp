@@ -2,7 +2,6 @@
 // four at a time: the same bits as one at a time, through each of the block solver's paths, and
 // the conditions of a sequential-impulse pass checked by hand on the velocities it leaves.
 
-#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -104,21 +103,9 @@ struct Colour : gp::test::RandomColour {
   }
 };
 
-std::uint64_t bits(double x) {
-  return std::bit_cast<std::uint64_t>(x);
-}
-
-// One pass over `colour`'s contacts in runs of `runs` contacts each (the blocks of a colour's
-// contacts handed out, of any length, the last four lanes or fewer); returns the largest change.
+// One pass over `colour`'s contacts four at a time in runs of `runs` contacts each.
 double pass_in_runs(Colour& colour, std::span<const std::size_t> runs) {
-  double largest = 0.0;
-  for (std::size_t first = 0; const std::size_t run : runs) {
-    largest = std::max(
-        largest, gp::solve_two_points(colour.set, std::span(colour.indices).subspan(first, run),
-                                      colour.inertia, colour.state));
-    first += run;
-  }
-  return largest;
+  return gp::test::pass_in_runs(colour, runs, gp::solve_two_points);
 }
 
 TEST_CASE("Independent two-point contacts four at a time are the same to the bit as one at a time",
@@ -127,41 +114,13 @@ TEST_CASE("Independent two-point contacts four at a time are the same to the bit
     WARN("no AVX2 on this CPU: the velocity passes take contacts one at a time");
     return;
   }
-  // Runs that start and end anywhere, of one to eleven contacts.
-  const std::vector<std::vector<std::size_t>> runs_of{{11}, {3, 8}, {1, 2, 6, 2}, {7, 4}};
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    for (const std::vector<std::size_t>& runs : runs_of) {
-      Colour lanes(seed);
-      Colour one(seed);
-      const double largest_lanes = pass_in_runs(lanes, runs);
-      double largest_one = 0.0;
-      for (const std::uint32_t i : one.indices) {
-        largest_one = std::max(largest_one,
-                               gp::solve_contact_once(one.set, one.set[i], one.inertia, one.state));
-      }
-      INFO("seed " << seed << ", " << runs.size() << " runs");
-      CHECK(bits(largest_lanes) == bits(largest_one));
-      for (std::size_t b = 0; b < lanes.state.velocity.size(); ++b) {
-        CHECK(bits(lanes.state.velocity[b].x()) == bits(one.state.velocity[b].x()));
-        CHECK(bits(lanes.state.velocity[b].y()) == bits(one.state.velocity[b].y()));
-        CHECK(bits(lanes.state.angular_velocity[b]) == bits(one.state.angular_velocity[b]));
-      }
-      for (const std::uint32_t i : lanes.indices) {
-        for (std::size_t k = 0; k < 2; ++k) {
-          const gp::ContactPointState& p = lanes.set.points(lanes.set[i])[k];
-          const gp::ContactPointState& q = one.set.points(one.set[i])[k];
-          INFO("contact " << i << ", point " << k);
-          CHECK(bits(p.normal_impulse) == bits(q.normal_impulse));
-          CHECK(bits(p.tangent_impulse) == bits(q.tangent_impulse));
-        }
-      }
-      // The idle contact and the static body (0) are left as they were, −0.0 included.
-      CHECK(lanes.set.points(lanes.set[kIdle])[0].normal_impulse == 0.0);
-      CHECK(std::signbit(lanes.state.velocity[gp::test::colour_body_a(kIdle)].x()));
-      CHECK(std::signbit(lanes.state.angular_velocity[gp::test::colour_body_b(kIdle)]));
-      CHECK(lanes.state.velocity[0] == gp::Vec2::Zero());
-    }
-  }
+  gp::test::check_as_one_at_a_time<Colour>(gp::solve_two_points, [](const Colour& colour) {
+    // The idle contact and the static body (0) are left as they were, −0.0 included.
+    CHECK(colour.set.points(colour.set[kIdle])[0].normal_impulse == 0.0);
+    CHECK(std::signbit(colour.state.velocity[gp::test::colour_body_a(kIdle)].x()));
+    CHECK(std::signbit(colour.state.angular_velocity[gp::test::colour_body_b(kIdle)]));
+    CHECK(colour.state.velocity[0] == gp::Vec2::Zero());
+  });
 }
 
 TEST_CASE("After a pass four at a time, each two-point contact meets its normal conditions",

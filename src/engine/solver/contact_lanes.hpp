@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <cstdint>
-#include <span>
 
 #include "engine/avx2_lanes.hpp"
 #include "engine/solver/contact_set.hpp"
@@ -221,18 +219,6 @@ struct FourPoints {
   store_bodies(m.b, four.b, movable_lanes(m.b) & first_n, s);
   double largest = 0.0;
   for (std::size_t l = 0; l < n; ++l) largest = std::max(largest, change[l]);
-  return largest;
-}
-
-// The largest of what `kernel(ids, n)` returns over `contacts`, n ≤ 4 of them from ids on at a
-// time.
-template <typename Kernel>
-double in_fours(std::span<const std::uint32_t> contacts, const Kernel& kernel) {
-  double largest = 0.0;
-  for (std::size_t done = 0; done < contacts.size(); done += 4) {
-    largest = std::max(
-        largest, kernel(contacts.data() + done, std::min<std::size_t>(4, contacts.size() - done)));
-  }
   return largest;
 }
 

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <stdexcept>
+
+#include "engine/solver/contacts_in_fours.hpp"
 
 #if GP_LANES_AVX2
 #include "engine/solver/contact_lanes.hpp"
@@ -57,23 +58,17 @@ namespace {
   return store_four(four, m, largest_step, busy, n, s);
 }
 
+// The kernel solve_in_fours runs: none in a build without AVX2.
+constexpr FourContactsKernel kKernel = solve_four;
+#else
+constexpr FourContactsKernel kKernel = nullptr;
 #endif
 
 }  // namespace
 
 double solve_single_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                            const BodyInertia& inertia, MotionState& s) {
-#if GP_LANES_AVX2
-  return in_fours(contacts, [&](const std::uint32_t* ids, std::size_t n) {
-    return solve_four(set, ids, n, inertia, s);
-  });
-#else
-  (void)set;
-  (void)contacts;
-  (void)inertia;
-  (void)s;
-  throw std::logic_error("solve_single_points: four lanes need AVX2");
-#endif
+  return solve_in_fours(kKernel, "solve_single_points", set, contacts, inertia, s);
 }
 
 const char* contact_lanes_name() {

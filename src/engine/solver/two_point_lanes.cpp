@@ -2,7 +2,8 @@
 
 #include <array>
 #include <cstddef>
-#include <stdexcept>
+
+#include "engine/solver/contacts_in_fours.hpp"
 
 #if GP_LANES_AVX2
 #include "engine/solver/contact_lanes.hpp"
@@ -150,23 +151,17 @@ struct BlockImpulses {
   return store_four(four, m, largest_step, busy, n, s);
 }
 
+// The kernel solve_in_fours runs: none in a build without AVX2.
+constexpr FourContactsKernel kKernel = solve_four;
+#else
+constexpr FourContactsKernel kKernel = nullptr;
 #endif
 
 }  // namespace
 
 double solve_two_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                         const BodyInertia& inertia, MotionState& s) {
-#if GP_LANES_AVX2
-  return in_fours(contacts, [&](const std::uint32_t* ids, std::size_t n) {
-    return solve_four(set, ids, n, inertia, s);
-  });
-#else
-  (void)set;
-  (void)contacts;
-  (void)inertia;
-  (void)s;
-  throw std::logic_error("solve_two_points: four lanes need AVX2");
-#endif
+  return solve_in_fours(kKernel, "solve_two_points", set, contacts, inertia, s);
 }
 
 }  // namespace gp
