@@ -202,6 +202,20 @@ struct FourPoints {
   }
 }
 
+// The normal and tangent impulses of four points, a lane each, into point k of the first n of
+// `contacts`: each point's two with one 16-byte store, as they lie side by side.
+[[gnu::target("avx2")]] inline void store_impulses(const FourContacts& contacts, std::size_t k,
+                                                   std::size_t n, Four normal, Four tangent) {
+  const Four even = _mm256_unpacklo_pd(normal, tangent);  // (n0, t0, n2, t2)
+  const Four odd = _mm256_unpackhi_pd(normal, tangent);   // (n1, t1, n3, t3)
+  // Arrays, not std::array, which would drop the vector type's alignment attribute.
+  const __m128d pairs[4] = {_mm256_castpd256_pd128(even), _mm256_castpd256_pd128(odd),
+                            _mm256_extractf128_pd(even, 1), _mm256_extractf128_pd(odd, 1)};
+  for (std::size_t l = 0; l < n; ++l) {
+    _mm_storeu_pd(&contacts.point[l][k].normal_impulse, pairs[l]);
+  }
+}
+
 // The end of a pass over four contacts, lane by lane as solve_contact_once ends: the velocities of
 // `m` back into `s` for the first n lanes' movable bodies (as PairMotion::store: a static body may
 // be in contacts solved on other threads at the same time), and the largest of the lanes' largest
@@ -209,17 +223,20 @@ struct FourPoints {
 [[gnu::target("avx2")]] inline double store_four(const FourContacts& four, const FourPairs& m,
                                                  Four largest_step, Four busy, std::size_t n,
                                                  MotionState& s) {
-  alignas(32) std::array<double, 4> change;
-  _mm256_store_pd(
-      change.data(),
-      _mm256_and_pd(_mm256_mul_pd(largest_step, _mm256_add_pd(m.a.inverse_mass, m.b.inverse_mass)),
-                    busy));
+  const Four change = _mm256_and_pd(
+      _mm256_mul_pd(largest_step, _mm256_add_pd(m.a.inverse_mass, m.b.inverse_mass)), busy);
   const int first_n = (1 << n) - 1;
   store_bodies(m.a, four.a, movable_lanes(m.a) & first_n, s);
   store_bodies(m.b, four.b, movable_lanes(m.b) & first_n, s);
-  double largest = 0.0;
-  for (std::size_t l = 0; l < n; ++l) largest = std::max(largest, change[l]);
-  return largest;
+  // std::max(largest, change) from 0 in the lanes' order, each as _mm_max_sd(change, largest):
+  // the lanes past n, not busy, hold +0 and leave it as it is.
+  const __m128d low = _mm256_castpd256_pd128(change);
+  const __m128d high = _mm256_extractf128_pd(change, 1);
+  __m128d largest = _mm_max_sd(low, _mm_setzero_pd());
+  largest = _mm_max_sd(_mm_unpackhi_pd(low, low), largest);
+  largest = _mm_max_sd(high, largest);
+  largest = _mm_max_sd(_mm_unpackhi_pd(high, high), largest);
+  return _mm_cvtsd_f64(largest);
 }
 
 }  // namespace gp

@@ -46,13 +46,8 @@ namespace {
   const Four tangent_step = rub(m, p, friction, rubs, tangent_total);
   const Four normal_step = press(m, p, busy, normal_total);
 
-  alignas(32) std::array<double, 4> normal_out, tangent_out;
-  _mm256_store_pd(normal_out.data(), where(busy, p.normal_impulse, normal_total));
-  _mm256_store_pd(tangent_out.data(), where(rubs, p.tangent_impulse, tangent_total));
-  for (std::size_t l = 0; l < n; ++l) {
-    four.point[l]->normal_impulse = normal_out[l];
-    four.point[l]->tangent_impulse = tangent_out[l];
-  }
+  store_impulses(four, 0, n, where(busy, p.normal_impulse, normal_total),
+                 where(rubs, p.tangent_impulse, tangent_total));
   const Four largest_step =
       max_of(max_of(zero, _mm256_and_pd(magnitude(tangent_step), rubs)), magnitude(normal_step));
   return store_four(four, m, largest_step, busy, n, s);
@@ -68,7 +63,7 @@ constexpr FourContactsKernel kKernel = nullptr;
 
 double solve_single_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                            const BodyInertia& inertia, MotionState& s) {
-  return solve_in_fours(kKernel, "solve_single_points", set, contacts, inertia, s);
+  return solve_in_fours<kKernel>("solve_single_points", set, contacts, inertia, s);
 }
 
 const char* contact_lanes_name() {

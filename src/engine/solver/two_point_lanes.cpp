@@ -134,17 +134,8 @@ struct BlockImpulses {
 
   const Four normal_p = where(by_block, where(one_by_one, p.normal_impulse, pressed_p), x.first);
   const Four normal_q = where(by_block, where(one_by_one, q.normal_impulse, pressed_q), x.second);
-  alignas(32) std::array<double, 4> normal_p_out, normal_q_out, tangent_p_out, tangent_q_out;
-  _mm256_store_pd(normal_p_out.data(), normal_p);
-  _mm256_store_pd(normal_q_out.data(), normal_q);
-  _mm256_store_pd(tangent_p_out.data(), where(rubs, p.tangent_impulse, tangent_p));
-  _mm256_store_pd(tangent_q_out.data(), where(rubs, q.tangent_impulse, tangent_q));
-  for (std::size_t l = 0; l < n; ++l) {
-    four.point[l][0].normal_impulse = normal_p_out[l];
-    four.point[l][0].tangent_impulse = tangent_p_out[l];
-    four.point[l][1].normal_impulse = normal_q_out[l];
-    four.point[l][1].tangent_impulse = tangent_q_out[l];
-  }
+  store_impulses(four, 0, n, normal_p, where(rubs, p.tangent_impulse, tangent_p));
+  store_impulses(four, 1, n, normal_q, where(rubs, q.tangent_impulse, tangent_q));
   const Four largest_step =
       where(by_block, max_of(max_of(rubbed, magnitude(press_step_p)), magnitude(press_step_q)),
             max_of(max_of(rubbed, magnitude(block_step_p)), magnitude(block_step_q)));
@@ -161,7 +152,7 @@ constexpr FourContactsKernel kKernel = nullptr;
 
 double solve_two_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                         const BodyInertia& inertia, MotionState& s) {
-  return solve_in_fours(kKernel, "solve_two_points", set, contacts, inertia, s);
+  return solve_in_fours<kKernel>("solve_two_points", set, contacts, inertia, s);
 }
 
 }  // namespace gp
