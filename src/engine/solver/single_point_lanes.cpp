@@ -19,8 +19,9 @@ namespace {
 // solve_contact_once over the n ≤ 4 one-point contacts `ids` of `set`, lane by lane: friction
 // where it is above 0, then the normal constraint, and nothing where the contact is idle. The
 // lanes past n take the first contact, to read only, and change nothing.
-[[gnu::target("avx2")]] double solve_four(ContactSet& set, const std::uint32_t* ids, std::size_t n,
-                                          const BodyInertia& inertia, MotionState& s) {
+[[gnu::target("avx2")]] double solve_four_single_points(ContactSet& set, const std::uint32_t* ids,
+                                                        std::size_t n, const BodyInertia& inertia,
+                                                        MotionState& s) {
   const __m256i lanes = first_lanes(n);
   FourContacts four;
   std::array<const double*, 4> point_fields, contact_fields;
@@ -54,16 +55,16 @@ namespace {
 }
 
 // The kernel solve_in_fours runs: none in a build without AVX2.
-constexpr FourContactsKernel kKernel = solve_four;
+constexpr FourContactsKernel kSinglePointsKernel = solve_four_single_points;
 #else
-constexpr FourContactsKernel kKernel = nullptr;
+constexpr FourContactsKernel kSinglePointsKernel = nullptr;
 #endif
 
 }  // namespace
 
 double solve_single_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                            const BodyInertia& inertia, MotionState& s) {
-  return solve_in_fours<kKernel>("solve_single_points", set, contacts, inertia, s);
+  return solve_in_fours<kSinglePointsKernel>("solve_single_points", set, contacts, inertia, s);
 }
 
 const char* contact_lanes_name() {

@@ -73,8 +73,9 @@ struct BlockImpulses {
 // each point where it is above 0, then both normal constraints by the block where it serves, else
 // one after the other, and nothing where the contact is idle. The lanes past n take the first
 // contact, to read only, and change nothing.
-[[gnu::target("avx2")]] double solve_four(ContactSet& set, const std::uint32_t* ids, std::size_t n,
-                                          const BodyInertia& inertia, MotionState& s) {
+[[gnu::target("avx2")]] double solve_four_two_points(ContactSet& set, const std::uint32_t* ids,
+                                                     std::size_t n, const BodyInertia& inertia,
+                                                     MotionState& s) {
   const __m256i lanes = first_lanes(n);
   FourContacts four;
   std::array<const double*, 4> first_fields, second_fields, contact_fields, block_fields;
@@ -143,16 +144,16 @@ struct BlockImpulses {
 }
 
 // The kernel solve_in_fours runs: none in a build without AVX2.
-constexpr FourContactsKernel kKernel = solve_four;
+constexpr FourContactsKernel kTwoPointsKernel = solve_four_two_points;
 #else
-constexpr FourContactsKernel kKernel = nullptr;
+constexpr FourContactsKernel kTwoPointsKernel = nullptr;
 #endif
 
 }  // namespace
 
 double solve_two_points(ContactSet& set, std::span<const std::uint32_t> contacts,
                         const BodyInertia& inertia, MotionState& s) {
-  return solve_in_fours<kKernel>("solve_two_points", set, contacts, inertia, s);
+  return solve_in_fours<kTwoPointsKernel>("solve_two_points", set, contacts, inertia, s);
 }
 
 }  // namespace gp
