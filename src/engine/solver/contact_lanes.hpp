@@ -4,7 +4,6 @@
 // or bodies in one 256-bit register, and the pushes of PairMotion lane by lane. Include it only
 // under GP_LANES_AVX2 (engine/lanes.hpp); its functions are compiled for AVX2 alone.
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 

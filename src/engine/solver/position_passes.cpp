@@ -69,6 +69,16 @@ double turning_arm_bound(AnchorKind kind, double tangent_arm, double normal_arm,
   return std::numeric_limits<double>::infinity();
 }
 
+// The 1-norm [m] of `v`, which is at least its length.
+double extent(const Vec2& v) {
+  return std::abs(v.x()) + std::abs(v.y());
+}
+
+// The 1-norm [m] of body b's displacement from `detected` to `now`.
+double travel(const MotionState& now, const MotionState& detected, BodyId b) {
+  return extent(now.position[b] - detected.position[b]);
+}
+
 // How far a contact's two bodies moved in `now` since `detected`, for telling the points that
 // surely overlap by no more than the slop: at detection the separation of a point's deepest points
 // was −depth, and since then it has fallen by no more than those points moved, each by at most
@@ -95,12 +105,6 @@ class MovedSinceDetection {
   }
 
  private:
-  // The 1-norm [m] of a body's displacement, which is at least its length.
-  static double travel(const MotionState& now, const MotionState& detected, BodyId b) {
-    return extent(now.position[b] - detected.position[b]);
-  }
-  static double extent(const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); }
-
   double centres_;  // m, both bodies' displacements
   double turn_a_;   // rad
   double turn_b_;
@@ -225,13 +229,12 @@ bool surely_within_slop(double deepest, double margin, const ContactGeometry& ge
     double turn = 0.0;    // rad
     double extent = 0.0;  // m
   };
-  const auto extent = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
   const std::size_t count = now.position.size();
   const Found found = reduce_blocks(
       count, kMovedBodiesPerTask, count < 2 * kMovedBodiesPerTask, Found{},
       [&](std::size_t first, std::size_t last, Found f) {
         for (std::size_t b = first; b < last; ++b) {
-          f.travel = larger(f.travel, extent(now.position[b] - detected.position[b]));
+          f.travel = larger(f.travel, travel(now, detected, b));
           f.turn = larger(f.turn, std::abs(within_half_turn(now.angle[b] - detected.angle[b])));
           f.extent = larger(f.extent, extent(now.position[b]));
         }

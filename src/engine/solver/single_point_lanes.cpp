@@ -1,6 +1,5 @@
 #include "engine/solver/single_point_lanes.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 

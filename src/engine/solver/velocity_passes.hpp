@@ -100,7 +100,8 @@ void warm_start(const ContactSet& contacts, const BodyInertia& inertia, MotionSt
 /// prepare_contacts, then warm_start into `s` (not `preparation.before`), contact by contact in
 /// the order of `batches`, on the threads of the current task arena: one pass over the contacts
 /// rather than two, with the same result, as preparing a contact reads no velocity of `s`.
-/// Returns the deepest point's overlap [m] (ContactPointState::depth), or 0 if none overlaps.
+/// Returns the deepest point's overlap [m] (ContactPointState::depth, negative where every point
+/// is apart), −∞ without contacts.
 double prepare_and_warm_start(const ContactBatches& batches, ContactSet& contacts,
                               const ContactPreparation& preparation, MotionState& s);
 
