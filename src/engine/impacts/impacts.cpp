@@ -74,22 +74,21 @@ double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Bal
 
 namespace {
 
-// τ in (t0, h] where the shapes first touch, given their signed distances d0 at t0 and d1 at h.
-std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, double d0, double d1,
-                                  const Ballistic& motion, const StepWindow& window) {
+// The signed distance [m] of shapes a and b after τ [s] along `motion`.
+double distance_after(const ShapeRecord& a, const ShapeRecord& b, const Ballistic& motion,
+                      double tau) {
+  return signed_distance(motion.placed(a, tau), motion.placed(b, tau));
+}
+
+// The shapes' first touch in (t0, h], given their signed distances d0 at t0 and d1 at h: where
+// they overlap at h, bracketed for touch_time; apart at both ends, searched for here.
+std::optional<Touch> first_touch(const ShapeRecord& a, const ShapeRecord& b, double d0, double d1,
+                                 const Ballistic& motion, const StepWindow& window) {
   const double t0 = window.t0;
   const double h = window.h;
-  const auto distance = [&](double tau) {
-    return signed_distance(motion.placed(a, tau), motion.placed(b, tau));
-  };
-  if (d1 <= 0.0) {
-    // Bracketed: TOMS 748 converges superlinearly on the smooth distance of ballistic motion.
-    std::uintmax_t iterations = 100;
-    const auto [lo, hi] = boost::math::tools::toms748_solve(
-        distance, t0, h, d0, d1, boost::math::tools::eps_tolerance<double>(50), iterations);
-    (void)hi;
-    return lo;
-  }
+  if (d1 <= 0.0) return Touch{.distance_t0 = d0, .distance_h = d1};
+  const auto touch_at = [d0](double tau) { return Touch{.time = tau, .distance_t0 = d0}; };
+  const auto distance = [&](double tau) { return distance_after(a, b, motion, tau); };
   // Apart at both ends: they can only have met in between if they could close d0 + d1 in time.
   const double bound = closing_speed_bound(a, b, motion, h);
   if (bound * (h - t0) < d0 + d1) return std::nullopt;
@@ -102,15 +101,35 @@ std::optional<double> first_touch(const ShapeRecord& a, const ShapeRecord& b, do
     tau += d / bound;
     if (tau >= h) return std::nullopt;
     d = distance(tau);
-    if (d <= kTouch) return tau;
+    if (d <= kTouch) return touch_at(tau);
   }
-  return d <= kNear ? std::optional<double>(tau) : std::nullopt;
+  return d <= kNear ? std::optional<Touch>(touch_at(tau)) : std::nullopt;
 }
 
 }  // namespace
 
+double touch_time(const Touch& touch, const ShapeRecord& a, const ShapeRecord& b,
+                  const Ballistic& motion, const StepWindow& window) {
+  if (touch.searched()) return touch.time;
+  // TOMS 748 converges superlinearly on the smooth distance of ballistic motion.
+  std::uintmax_t iterations = 100;
+  const auto [lo, hi] = boost::math::tools::toms748_solve(
+      [&](double tau) { return distance_after(a, b, motion, tau); }, window.t0, window.h,
+      touch.distance_t0, touch.distance_h, boost::math::tools::eps_tolerance<double>(50),
+      iterations);
+  (void)hi;
+  return lo;
+}
+
 std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
                                   const StepWindow& window, const ImpactFilter& filter) {
+  const std::optional<Touch> touch = find_touch(a, b, motion, window, filter);
+  if (!touch) return std::nullopt;
+  return touch_time(*touch, a.shape, b.shape, motion, window);
+}
+
+std::optional<Touch> find_touch(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
+                                const StepWindow& window, const ImpactFilter& filter) {
   // Shapes further apart than the pair can close over the window cannot touch in it: the distance
   // changes no faster than the bound on their closing speed, so at the window's end they are
   // still apart, and the search below would find no touch. A nanometre more, far above the

@@ -3,6 +3,8 @@
 // of IM:col2D) and resolves the impact there, so that the rest of the step is integrated after
 // it; a fast body cannot pass through a thin wall between two steps.
 
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -81,11 +83,31 @@ struct StepWindow {
   double h;
 };
 
-/// The earliest τ in (t0, h] at which shapes `a` and `b`, apart at τ = t0 (signed distance >
-/// `filter.slop`), touch while following `motion`; nothing if they do not. Pairs closer than
-/// `filter.margin` that close slower than `filter.min_speed` over the rest of the step are left
-/// to the contact solver's speculative contacts, as they bounce no more than resting contacts
-/// (restitution threshold).
+/// A pair's first touch in a window, as find_touch finds it: the shapes' signed distance at t0,
+/// and the touch's time, or, for shapes that overlap at h, their signed distance there: the touch
+/// then surely lies between, and touch_time() searches for it when asked, as a caller that hands
+/// the impact over to the contact solver never needs its time.
+struct Touch {
+  double time = std::numeric_limits<double>::quiet_NaN();  ///< τ [s]; NaN until searched for
+  double distance_t0 = 0.0;                                ///< m, above the filter's slop
+  double distance_h = 0.0;                                 ///< m, ≤ 0 where not searched for
+  bool searched() const { return !std::isnan(time); }
+};
+
+/// Whether shapes `a` and `b`, apart at τ = t0 (signed distance > `filter.slop`), touch in (t0, h]
+/// while following `motion`; nothing if they do not. Pairs closer than `filter.margin` that close
+/// slower than `filter.min_speed` over the rest of the step are left to the contact solver's
+/// speculative contacts, as they bounce no more than resting contacts (restitution threshold).
+std::optional<Touch> find_touch(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
+                                const StepWindow& window, const ImpactFilter& filter);
+
+/// The earliest τ in (t0, h] at which the shapes of `touch`, found by find_touch with the same
+/// shapes, motion and window, touch: its time, or, not yet searched for, the root of their
+/// signed distance between the bracket's ends.
+double touch_time(const Touch& touch, const ShapeRecord& a, const ShapeRecord& b,
+                  const Ballistic& motion, const StepWindow& window);
+
+/// find_touch, with the touch's time.
 std::optional<double> impact_time(const SweptShape& a, const SweptShape& b, const Ballistic& motion,
                                   const StepWindow& window, const ImpactFilter& filter);
 

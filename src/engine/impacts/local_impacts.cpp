@@ -28,9 +28,9 @@ void LocalImpacts::classify(StepContext& ctx) {
   if (!ctx.impacts_allowed()) return;
   const WorldShapes& start = ctx.world_start;
   const ImpactFilter f = impact_filter(ctx.settings);
-  const auto impact_of = [&](const ShapePair& p) {
-    return impact_time({ctx.shapes[p.first], start[p.first]},
-                       {ctx.shapes[p.second], start[p.second]}, *ctx.motion, {0.0, ctx.h}, f);
+  const auto touch_of = [&](const ShapePair& p) {
+    return find_touch({ctx.shapes[p.first], start[p.first]},
+                      {ctx.shapes[p.second], start[p.second]}, *ctx.motion, {0.0, ctx.h}, f);
   };
   // Pairs whose contact touches are the contact solver's: no distance to compute.
   const std::span<const ShapePair> pairs = ctx.pairs;
@@ -38,14 +38,14 @@ void LocalImpacts::classify(StepContext& ctx) {
   if (one_thread() || pairs.size() < CollisionDetection::kParallelPairs) {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       if (touching[i] != 0) continue;
-      if (const auto tau = impact_of(pairs[i])) pending_.push_back({pairs[i], *tau});
+      if (const auto touch = touch_of(pairs[i])) pending_.push_back({pairs[i], *touch});
     }
   } else {
     // On several threads, a block of the pairs apart at a time: each one's time into its own
     // slot, then gathered in the pairs' order, so that they do not depend on the number of
     // threads.
     apart_.reserve(kSweptPairsPerBlock);
-    times_.resize(kSweptPairsPerBlock);
+    touches_.resize(kSweptPairsPerBlock);
     for (std::size_t next = 0; next < pairs.size();) {
       apart_.clear();
       for (; next < pairs.size() && apart_.size() < kSweptPairsPerBlock; ++next) {
@@ -54,11 +54,11 @@ void LocalImpacts::classify(StepContext& ctx) {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, apart_.size(), kSweptPairsPerTask),
                         [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                            times_[k] = impact_of(pairs[apart_[k]]);
+                            touches_[k] = touch_of(pairs[apart_[k]]);
                           }
                         });
       for (std::size_t k = 0; k < apart_.size(); ++k) {
-        if (times_[k]) pending_.push_back({pairs[apart_[k]], *times_[k]});
+        if (touches_[k]) pending_.push_back({pairs[apart_[k]], *touches_[k]});
       }
     }
   }
@@ -128,7 +128,7 @@ void LocalImpacts::hand_over(StepContext& ctx) {
       const WorldShapeView& a = start[e.pair.first];
       const WorldShapeView& b = start[e.pair.second];
       // A margin that reaches the other shape, so that the solver holds the gap closed.
-      const ContactManifold m = collide(a, b, signed_distance(a, b) + ctx.settings.contact_margin);
+      const ContactManifold m = collide(a, b, e.touch.distance_t0 + ctx.settings.contact_margin);
       if (m.count > 0) append_contact(e.pair, ctx.shapes, m, ctx.start, speculative);
       join(ctx, ctx.shapes[e.pair.first].body);
       join(ctx, ctx.shapes[e.pair.second].body);
@@ -167,13 +167,18 @@ bool LocalImpacts::resolve(StepContext& ctx) {
   };
   join_engaged(ctx, [&](const Contact& c) { return !joined(c.body_a) || !joined(c.body_b); });
   const double h = ctx.h;
+  // The times classify() only bracketed, from the motion it followed: nothing has moved since.
+  for (Pending& e : pending_) {
+    e.touch.time = touch_time(e.touch, ctx.shapes[e.pair.first], ctx.shapes[e.pair.second],
+                              *ctx.motion, {0.0, h});
+  }
   MotionState& start = ctx.start;
   const double same_time = simultaneity(h);
   while (!pending_.empty() && ctx.impacts_allowed()) {
     const double tau =
         std::min_element(pending_.begin(), pending_.end(), [](const Pending& x, const Pending& y) {
-          return x.time < y.time;
-        })->time;
+          return x.touch.time < y.touch.time;
+        })->touch.time;
     group_.clear();
     changed_.clear();
     held_.clear();
@@ -181,7 +186,7 @@ bool LocalImpacts::resolve(StepContext& ctx) {
     // only the static and kinematic ones, whose paths the impact does not change, are held aside
     // to be put back after it.
     for (const Pending& e : pending_) {
-      if (e.time > tau + same_time) continue;
+      if (e.touch.time > tau + same_time) continue;
       group_.push_back(e.pair);
       for (std::uint32_t shape : {e.pair.first, e.pair.second}) {
         const BodyId b = ctx.shapes[shape].body;
@@ -259,9 +264,11 @@ bool LocalImpacts::search_after(StepContext& ctx, double tau) {
           continue;
         }
         const WorldShape there = motion.placed(ctx.shapes[k], tau);
-        const auto when =
-            impact_time({ctx.shapes[i], here}, {ctx.shapes[k], there}, motion, {tau, h}, f);
-        if (when) pending_.push_back({{std::min(i, k), std::max(i, k)}, *when});
+        if (auto touch =
+                find_touch({ctx.shapes[i], here}, {ctx.shapes[k], there}, motion, {tau, h}, f)) {
+          touch->time = touch_time(*touch, ctx.shapes[i], ctx.shapes[k], motion, {tau, h});
+          pending_.push_back({{std::min(i, k), std::max(i, k)}, *touch});
+        }
       }
     }
   }

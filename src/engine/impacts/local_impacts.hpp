@@ -25,9 +25,9 @@ struct StepContext;
 class LocalImpacts {
  public:
   /// Finds the impacts of the sub-step: the candidate pairs that are apart at its start and touch
-  /// within it along the context's motion (only while impacts are still allowed this step).
-  /// Their speculative contacts leave the context's contacts (both sorted by pair), as the
-  /// impacts take their place.
+  /// within it along the context's motion (only while impacts are still allowed this step), an
+  /// impact's time only bracketed where it can be (Touch). Their speculative contacts leave the
+  /// context's contacts (both sorted by pair), as the impacts take their place.
   void classify(StepContext& ctx);
 
   /// Pending impacts on bodies that take part in the contacts become speculative contacts (made
@@ -56,7 +56,9 @@ class LocalImpacts {
  private:
   struct Pending {
     ShapePair pair;
-    double time;  ///< τ [s] from the start of the step
+    /// Its time τ [s] from the start of the step, searched for by resolve() where classify()
+    /// only bracketed it.
+    Touch touch;
   };
 
   /// Whether contact `c` (of the context's contacts) can push during the sub-step from its start
@@ -81,10 +83,10 @@ class LocalImpacts {
   bool search_after(StepContext& ctx, double tau);
 
   std::vector<Pending> pending_;
-  // classify's block of pairs apart (indices into the context's pairs) and their times of
-  // impact, on several threads.
+  // classify's block of pairs apart (indices into the context's pairs) and their touches, on
+  // several threads.
   std::vector<std::uint32_t> apart_;
-  std::vector<std::optional<double>> times_;
+  std::vector<std::optional<Touch>> touches_;
   // Who owns a body's contacts this step, one role per body. A body's contacts follow it: those
   // of a body in the solver are the contact solver's (resting, or impacts handed over as
   // speculative contacts); those of a body with an impact are dropped, as its impacts' search
