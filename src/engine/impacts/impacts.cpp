@@ -62,10 +62,12 @@ double closing_speed_bound(const ShapeRecord& a, const ShapeRecord& b, const Bal
                            double h) {
   // Translation counts relative to each other (two discs falling side by side do not close),
   // turning for each body on its own.
+  // A disc about its centre of mass reaches its radius, the same as reach() gives (0 + r), found
+  // without a visit and a root: a rain's pairs are all such discs.
   const auto turning = [&m, h](const ShapeRecord& r) {
     return (std::abs(m.start.angular_velocity[r.body]) +
             std::abs(m.acceleration.angular(r.body)) * h) *
-           reach(r.local);
+           (r.centred_disc() ? r.local.circle().radius : reach(r.local));
   };
   return (m.start.velocity[a.body] - m.start.velocity[b.body]).norm() +
          (m.acceleration.linear(a.body) - m.acceleration.linear(b.body)).norm() * h + turning(a) +
