@@ -9,12 +9,10 @@
 #include <cmath>
 
 #include "engine/collision/body_shapes.hpp"
-#include "engine/collision/signed_distance.hpp"
 #include "engine/impacts/impacts.hpp"
 
 using Catch::Matchers::WithinAbs;
 using gp::Shape;
-using gp::Vec2;
 
 namespace {
 namespace test_touch_search {
